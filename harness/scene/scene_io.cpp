@@ -1,0 +1,750 @@
+#include "scene_io.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "io.h"
+#include "rng.h"
+
+namespace bvb {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kMaxFrames = 100000;
+
+std::string num(double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.10g", v);
+  return b;
+}
+
+[[noreturn]] void spec_error(const std::string &key, const std::string &msg) {
+  throw InputError("scene spec: " + key + ": " + msg);
+}
+
+double parse_num(const std::string &key, const std::string &v, double lo, double hi) {
+  errno = 0;
+  char *end = nullptr;
+  const double d = std::strtod(v.c_str(), &end);
+  if (v.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(d) ||
+      v.find_first_of("xXpP") != std::string::npos)
+    spec_error(key, "not a number: '" + v + "'");
+  if (d < lo || d > hi) spec_error(key, v + " is out of range " + num(lo) + ".." + num(hi));
+  return d;
+}
+
+long long parse_int(const std::string &key, const std::string &v, long long lo, long long hi) {
+  if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos || v.size() > 18)
+    spec_error(key, "not a whole number: '" + v + "'");
+  const long long n = std::stoll(v);
+  if (n < lo || n > hi)
+    spec_error(key, v + " is out of range " + std::to_string(lo) + ".." + std::to_string(hi));
+  return n;
+}
+
+bool parse_bool(const std::string &key, const std::string &v) {
+  if (v == "1") return true;
+  if (v == "0") return false;
+  spec_error(key, "expected 0 or 1, not '" + v + "'");
+}
+
+struct KeyDef {
+  const char *name;
+  std::function<void(SceneSpec &, const std::string &)> set;
+  std::function<std::string(const SceneSpec &)> get;
+};
+
+const std::vector<KeyDef> &spec_keys() {
+  static const std::vector<KeyDef> keys = {
+      {"arena",
+       [](SceneSpec &s, const std::string &v) {
+         if (v.empty() || v.find_first_of(",= ") != std::string::npos)
+           spec_error("arena", "expected an arena name or file, not '" + v + "'");
+         s.arena = v;
+       },
+       [](const SceneSpec &s) { return s.arena; }},
+      {"path",
+       [](SceneSpec &s, const std::string &v) {
+         if (v != "avoid") path_script(v, 36, 90, 36, true);  // validates
+         s.path = v;
+       },
+       [](const SceneSpec &s) { return s.path; }},
+      {"length", [](SceneSpec &s, const std::string &v) { s.length_in = parse_num("length", v, -1e5, 1e5); },
+       [](const SceneSpec &s) { return num(s.length_in); }},
+      {"angle", [](SceneSpec &s, const std::string &v) { s.angle_deg = parse_num("angle", v, -1e5, 1e5); },
+       [](const SceneSpec &s) { return num(s.angle_deg); }},
+      {"side", [](SceneSpec &s, const std::string &v) { s.side_in = parse_num("side", v, 0.01, 1e5); },
+       [](const SceneSpec &s) { return num(s.side_in); }},
+      {"dir",
+       [](SceneSpec &s, const std::string &v) {
+         if (v != "left" && v != "right") spec_error("dir", "expected left or right, not '" + v + "'");
+         s.square_left = v == "left";
+       },
+       [](const SceneSpec &s) { return std::string(s.square_left ? "left" : "right"); }},
+      {"size",
+       [](SceneSpec &s, const std::string &v) {
+         const auto x = v.find('x');
+         if (x == std::string::npos) spec_error("size", "expected WxH (e.g. 160x120), not '" + v + "'");
+         s.width = int(parse_int("size", v.substr(0, x), 2, kMaxFrameDim));
+         s.height = int(parse_int("size", v.substr(x + 1), 2, kMaxFrameDim));
+       },
+       [](const SceneSpec &s) { return std::to_string(s.width) + "x" + std::to_string(s.height); }},
+      {"frames",
+       [](SceneSpec &s, const std::string &v) {
+         s.frames = v == "auto" ? 0 : int(parse_int("frames", v, 1, kMaxFrames));
+       },
+       [](const SceneSpec &s) { return s.frames ? std::to_string(s.frames) : std::string("auto"); }},
+      {"seed",
+       [](SceneSpec &s, const std::string &v) {
+         s.seed = uint64_t(parse_int("seed", v, 0, 999999999999999999ll));
+       },
+       [](const SceneSpec &s) { return std::to_string(s.seed); }},
+      {"noise", [](SceneSpec &s, const std::string &v) { s.noise = parse_num("noise", v, 0, 100); },
+       [](const SceneSpec &s) { return num(s.noise); }},
+      {"speed", [](SceneSpec &s, const std::string &v) { s.speed_in = parse_num("speed", v, 0.001, 100); },
+       [](const SceneSpec &s) { return num(s.speed_in); }},
+      {"turn_rate",
+       [](SceneSpec &s, const std::string &v) { s.turn_rate_deg = parse_num("turn_rate", v, 0.001, 90); },
+       [](const SceneSpec &s) { return num(s.turn_rate_deg); }},
+      {"fx",
+       [](SceneSpec &s, const std::string &v) { s.fx = v == "auto" ? 0 : parse_num("fx", v, 1, 1e5); },
+       [](const SceneSpec &s) { return s.fx > 0 ? num(s.fx) : std::string("auto"); }},
+      {"cam_height",
+       [](SceneSpec &s, const std::string &v) { s.cam_height_in = parse_num("cam_height", v, 0.1, 1000); },
+       [](const SceneSpec &s) { return num(s.cam_height_in); }},
+      {"tilt", [](SceneSpec &s, const std::string &v) { s.tilt_deg = parse_num("tilt", v, -60, 80); },
+       [](const SceneSpec &s) { return num(s.tilt_deg); }},
+      {"cam_offset",
+       [](SceneSpec &s, const std::string &v) { s.cam_offset_in = parse_num("cam_offset", v, -100, 100); },
+       [](const SceneSpec &s) { return num(s.cam_offset_in); }},
+      {"ss", [](SceneSpec &s, const std::string &v) { s.supersample = int(parse_int("ss", v, 1, 8)); },
+       [](const SceneSpec &s) { return std::to_string(s.supersample); }},
+      {"mover",
+       [](SceneSpec &s, const std::string &v) {
+         if (v != "none" && v != "cross" && v != "arena")
+           spec_error("mover", "expected none, cross or arena, not '" + v + "'");
+         s.mover = v;
+       },
+       [](const SceneSpec &s) { return s.mover; }},
+      {"flicker", [](SceneSpec &s, const std::string &v) { s.flicker = parse_num("flicker", v, 0, 0.9); },
+       [](const SceneSpec &s) { return num(s.flicker); }},
+      {"flicker_period",
+       [](SceneSpec &s, const std::string &v) {
+         s.flicker_period = int(parse_int("flicker_period", v, 2, kMaxFrames));
+       },
+       [](const SceneSpec &s) { return std::to_string(s.flicker_period); }},
+      {"light_step",
+       [](SceneSpec &s, const std::string &v) {
+         s.light_step = v == "none" ? -1 : int(parse_int("light_step", v, 0, kMaxFrames));
+       },
+       [](const SceneSpec &s) {
+         return s.light_step < 0 ? std::string("none") : std::to_string(s.light_step);
+       }},
+      {"step_gain",
+       [](SceneSpec &s, const std::string &v) { s.step_gain = parse_num("step_gain", v, 0, 10); },
+       [](const SceneSpec &s) { return num(s.step_gain); }},
+      {"step_offset",
+       [](SceneSpec &s, const std::string &v) { s.step_offset = parse_num("step_offset", v, -255, 255); },
+       [](const SceneSpec &s) { return num(s.step_offset); }},
+      {"slip", [](SceneSpec &s, const std::string &v) { s.slip = parse_num("slip", v, 0, 1); },
+       [](const SceneSpec &s) { return num(s.slip); }},
+      {"enc_noise",
+       [](SceneSpec &s, const std::string &v) { s.enc_noise = parse_num("enc_noise", v, 0, 1000); },
+       [](const SceneSpec &s) { return num(s.enc_noise); }},
+      {"tpi", [](SceneSpec &s, const std::string &v) { s.tpi = parse_num("tpi", v, 0.01, 1e6); },
+       [](const SceneSpec &s) { return num(s.tpi); }},
+      {"wheelbase",
+       [](SceneSpec &s, const std::string &v) { s.wheelbase_in = parse_num("wheelbase", v, 0.1, 1000); },
+       [](const SceneSpec &s) { return num(s.wheelbase_in); }},
+      {"radius", [](SceneSpec &s, const std::string &v) { s.radius_in = parse_num("radius", v, 0.1, 1000); },
+       [](const SceneSpec &s) { return num(s.radius_in); }},
+      {"block_dist",
+       [](SceneSpec &s, const std::string &v) { s.block_dist_in = parse_num("block_dist", v, 0, 1e5); },
+       [](const SceneSpec &s) { return num(s.block_dist_in); }},
+      {"start",
+       [](SceneSpec &s, const std::string &v) {
+         if (v == "arena") {
+           s.has_start = false;
+           return;
+         }
+         const auto a = v.find(':'), b = v.find(':', a == std::string::npos ? a : a + 1);
+         if (a == std::string::npos || b == std::string::npos)
+           spec_error("start", "expected X:Y:HEADING or arena, not '" + v + "'");
+         s.start = {parse_num("start", v.substr(0, a), -1e6, 1e6),
+                    parse_num("start", v.substr(a + 1, b - a - 1), -1e6, 1e6),
+                    parse_num("start", v.substr(b + 1), -1e6, 1e6)};
+         s.has_start = true;
+       },
+       [](const SceneSpec &s) {
+         return s.has_start ? num(s.start.x_in) + ":" + num(s.start.y_in) + ":" + num(s.start.heading_deg)
+                            : std::string("arena");
+       }},
+      {"texture_seed",
+       [](SceneSpec &s, const std::string &v) {
+         s.has_texture_seed = v != "arena";
+         if (s.has_texture_seed) s.texture_seed = uint64_t(parse_int("texture_seed", v, 0, 999999999999999999ll));
+       },
+       [](const SceneSpec &s) {
+         return s.has_texture_seed ? std::to_string(s.texture_seed) : std::string("arena");
+       }},
+      {"uyvy", [](SceneSpec &s, const std::string &v) { s.write_uyvy = parse_bool("uyvy", v); },
+       [](const SceneSpec &s) { return std::string(s.write_uyvy ? "1" : "0"); }},
+      {"flow", [](SceneSpec &s, const std::string &v) { s.write_flow = parse_bool("flow", v); },
+       [](const SceneSpec &s) { return std::string(s.write_flow ? "1" : "0"); }},
+      {"rgb", [](SceneSpec &s, const std::string &v) { s.write_rgb = parse_bool("rgb", v); },
+       [](const SceneSpec &s) { return std::string(s.write_rgb ? "1" : "0"); }},
+  };
+  return keys;
+}
+
+}  // namespace
+
+SceneSpec parse_scene_spec(const std::string &text) {
+  SceneSpec s;
+  std::map<std::string, bool> seen;
+  size_t pos = 0;
+  if (text.find_first_not_of(" \t") == std::string::npos) return s;
+  while (pos <= text.size()) {
+    size_t end = text.find(',', pos);
+    if (end == std::string::npos) end = text.size();
+    const std::string item = text.substr(pos, end - pos);
+    pos = end + 1;
+    if (item.empty()) throw InputError("scene spec: empty item (stray comma) in '" + text + "'");
+    const auto eq = item.find('=');
+    if (eq == std::string::npos)
+      throw InputError("scene spec: '" + item + "' is not key=value");
+    const std::string key = item.substr(0, eq), val = item.substr(eq + 1);
+    const KeyDef *def = nullptr;
+    for (const auto &k : spec_keys())
+      if (key == k.name) def = &k;
+    if (!def) {
+      std::string known;
+      for (const auto &k : spec_keys()) known += (known.empty() ? "" : " ") + std::string(k.name);
+      throw InputError("scene spec: unknown key '" + key + "' (known: " + known + ")");
+    }
+    if (seen[key]) throw InputError("scene spec: key '" + key + "' given twice");
+    seen[key] = true;
+    def->set(s, val);
+  }
+  if (s.write_uyvy && s.width % 2)
+    throw InputError("scene spec: size: UYVY needs an even width (or set uyvy=0)");
+  return s;
+}
+
+std::string format_scene_spec(const SceneSpec &s) {
+  std::string out;
+  for (const auto &k : spec_keys()) out += (out.empty() ? "" : ",") + std::string(k.name) + "=" + k.get(s);
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Generator
+
+Camera scene_camera(const SceneSpec &s) {
+  Camera c = Camera::standard(s.width, s.height);
+  if (s.fx > 0) c.fx = c.fy = s.fx;
+  c.cam_height_in = s.cam_height_in;
+  c.tilt_deg = s.tilt_deg;
+  c.cam_offset_in = s.cam_offset_in;
+  return c;
+}
+
+SceneGenerator::SceneGenerator(const SceneSpec &spec) : spec_(spec) { init(load_arena(spec.arena)); }
+
+SceneGenerator::SceneGenerator(const SceneSpec &spec, const World &arena) : spec_(spec) { init(arena); }
+
+void SceneGenerator::init(const World &arena) {
+  cam_ = scene_camera(spec_);
+  arena_ = arena;
+  if (spec_.has_texture_seed) arena_.texture_seed = spec_.texture_seed;
+  const Pose start = spec_.has_start ? spec_.start : arena_.start;
+  if (spec_.mover == "none") {
+    arena_.movers.clear();
+  } else if (spec_.mover == "cross") {
+    const double h = deg2rad(start.heading_deg);
+    const Vec2 f{std::cos(h), std::sin(h)}, l{-std::sin(h), std::cos(h)};
+    MoverDef m;
+    m.cylinder = true;
+    m.size_in = 2.5;
+    m.height_in = 5;
+    m.color = {150, 25, 25};
+    m.a = {start.x_in + 30 * f.x - 12 * l.x, start.y_in + 30 * f.y - 12 * l.y};
+    m.b = {start.x_in + 30 * f.x + 12 * l.x, start.y_in + 30 * f.y + 12 * l.y};
+    m.speed_in = 0.4;
+    arena_.movers = {m};
+  } else if (arena_.movers.empty()) {
+    throw InputError("scene spec: mover=arena but arena '" + arena_.name + "' defines no mover");
+  }
+  finalize_world(arena_);
+  if (spec_.path == "avoid") {
+    script_ = "avoid";
+  } else {
+    script_ = path_script(spec_.path, spec_.length_in, spec_.angle_deg, spec_.side_in, spec_.square_left);
+    steps_ = expand_script(script_, spec_.speed_in, spec_.turn_rate_deg);
+  }
+  if (spec_.frames <= 0) spec_.frames = script_ == "avoid" ? 300 : int(std::min<size_t>(steps_.size() + 1, kMaxFrames));
+  enc_model_.ticks_per_inch = spec_.tpi;
+  enc_model_.wheelbase_in = spec_.wheelbase_in;
+  enc_model_.slip = spec_.slip;
+  enc_model_.noise_ticks = spec_.enc_noise;
+  pose_ = start;
+}
+
+RenderOptions SceneGenerator::render_options() const {
+  RenderOptions o;
+  o.supersample = spec_.supersample;
+  double g = 1 + spec_.flicker * std::sin(2 * kPi * frame_ / spec_.flicker_period);
+  double off = 0;
+  if (spec_.light_step >= 0 && frame_ >= spec_.light_step) {
+    g *= spec_.step_gain;
+    off = spec_.step_offset;
+  }
+  o.gain = g;
+  o.offset = off;
+  o.noise_sigma = spec_.noise;
+  o.noise_seed = hash_key(spec_.seed, uint64_t(frame_), 0x6e6f697365ull);
+  return o;
+}
+
+RenderResult SceneGenerator::render() const {
+  return bvb::render(world_now(), pose_, cam_, render_options());
+}
+
+ColumnTruth SceneGenerator::columns() const { return column_truth(world_now(), pose_, cam_); }
+
+FrameTruth SceneGenerator::truth() const {
+  const World w = world_now();
+  FrameTruth t;
+  t.frame = frame_;
+  t.pose = pose_;
+  t.step = last_step_;
+  t.clearance_in = corridor_clearance(w, pose_, spec_.radius_in);
+  t.blocked = t.clearance_in <= spec_.block_dist_in;
+  t.collision = collides(w, pose_, spec_.radius_in);
+  t.left_ticks = enc_.left_ticks();
+  t.right_ticks = enc_.right_ticks();
+  const RenderOptions o = render_options();
+  t.gain = o.gain;
+  t.offset = o.offset;
+  return t;
+}
+
+Step SceneGenerator::next_step() {
+  if (script_ != "avoid") return size_t(frame_) < steps_.size() ? steps_[size_t(frame_)] : Step{};
+  const World w = world_now();
+  const double R = spec_.radius_in, D = spec_.block_dist_in;
+  const double clear = corridor_clearance(w, pose_, R);
+  if (avoid_dir_ != 0) {
+    // Turn until the way is clearly free; after a full circle settle for just free.
+    avoid_turned_ += spec_.turn_rate_deg;
+    const double need = avoid_turned_ >= 360 ? D : D + 6;
+    if (clear <= need) return {0, avoid_dir_ * spec_.turn_rate_deg};
+    avoid_dir_ = 0;
+  }
+  if (clear > D) return {std::min(spec_.speed_in, clear), 0};
+  Pose l = pose_, r = pose_;
+  l.heading_deg += 45;
+  r.heading_deg -= 45;
+  avoid_dir_ = corridor_clearance(w, l, R) >= corridor_clearance(w, r, R) ? 1 : -1;
+  avoid_turned_ = 0;
+  return {0, avoid_dir_ * spec_.turn_rate_deg};
+}
+
+bool SceneGenerator::advance(const Step &step, bool stop_at_obstacles) {
+  const Pose next = step_pose(pose_, step.forward_in, step.turn_deg);
+  bool moved = true;
+  if (stop_at_obstacles && step.forward_in != 0 &&
+      collides(world_at_frame(arena_, frame_ + 1), next, spec_.radius_in))
+    moved = false;
+  encoders_step(enc_, enc_model_, step, hash_key(spec_.seed, uint64_t(frame_ + 1), 0x656e63ull));
+  ++frame_;
+  if (moved) pose_ = next;
+  last_step_ = moved ? step : Step{};
+  return moved;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Writing
+
+namespace {
+
+std::string frame_name(const char *stem, int k, const char *ext) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%s_%04d.%s", stem, k, ext);
+  return b;
+}
+
+std::string fixed(double v, int digits) {
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*f", digits, v);
+  return b;
+}
+
+const char *kTruthHeader =
+    "frame,x_in,y_in,heading_deg,step_fwd_in,step_turn_deg,blocked,clearance_in,collision,"
+    "left_ticks,right_ticks,gain,offset";
+const char *kColumnsHeader = "frame,column,distance_in,boundary_row";
+
+void write_text(const fs::path &p, const std::string &s) {
+  write_file_atomic(p.string(), s.data(), s.size());
+}
+
+std::string scene_txt(const SceneGenerator &g) {
+  const Camera &c = g.camera();
+  const SceneSpec &s = g.spec();
+  std::string files = "pgm";
+  if (s.write_uyvy) files += " uyvy";
+  if (s.write_rgb) files += " ppm";
+  if (s.write_flow) files += " flo";
+  std::string t;
+  t += "# bvb scene: rendered frames with ground truth (file formats: harness/scene/scene_io.h)\n";
+  t += "format = bvb-scene-1\n";
+  t += "spec = " + format_scene_spec(s) + "\n";
+  t += "arena = " + g.arena().name + "\n";
+  t += "frames = " + std::to_string(s.frames) + "\n";
+  t += "width = " + std::to_string(c.width) + "\n";
+  t += "height = " + std::to_string(c.height) + "\n";
+  t += "fx = " + num(c.fx) + "\n";
+  t += "fy = " + num(c.fy) + "\n";
+  t += "cx = " + num(c.cx) + "\n";
+  t += "cy = " + num(c.cy) + "\n";
+  t += "cam_height_in = " + num(c.cam_height_in) + "\n";
+  t += "tilt_deg = " + num(c.tilt_deg) + "\n";
+  t += "cam_offset_in = " + num(c.cam_offset_in) + "\n";
+  t += "script = " + g.script() + "\n";
+  t += "files = " + files + "\n";
+  t += "units = inches, degrees; world z up, heading counter-clockwise from +x; image x right, "
+       "y down, pixel centres at integers\n";
+  t += "yuv = BT.601 studio range: Y = ((66R+129G+25B+128)>>8)+16, U = ((-38R-74G+112B+128)>>8)"
+       "+128, V = ((112R-94G-18B+128)>>8)+128, U and V of a pair (a+b+1)>>1; pgm = Y\n";
+  return t;
+}
+
+}  // namespace
+
+std::string SceneData::file(const char *stem, int k, const char *ext) const {
+  return (fs::path(dir) / frame_name(stem, k, ext)).string();
+}
+
+void write_scene(const SceneSpec &spec, const std::string &dir, bool replace) {
+  if (dir.empty()) throw InputError("scene: empty output directory name");
+  SceneGenerator g(spec);
+  fs::path out = fs::path(dir);
+  if (!out.has_filename()) out = out.parent_path();
+  std::error_code ec;
+  if (fs::exists(out, ec)) {
+    const bool empty = fs::is_directory(out, ec) && fs::is_empty(out, ec);
+    if (!replace) throw InputError(out.string() + ": already exists (use --force to replace a scene)");
+    if (!empty && !fs::is_regular_file(out / "scene.txt", ec))
+      throw InputError(out.string() + ": exists and is not a scene directory; not replacing it");
+  }
+  if (out.has_parent_path()) fs::create_directories(out.parent_path(), ec);
+  const fs::path tmp = out.string() + ".tmp." + std::to_string(getpid());
+  fs::remove_all(tmp, ec);
+  if (!fs::create_directory(tmp, ec))
+    throw InputError(tmp.string() + ": cannot create directory: " + ec.message());
+  try {
+    const SceneSpec &s = g.spec();
+    write_text(tmp / "scene.txt", scene_txt(g));
+    write_text(tmp / "arena.txt", format_arena(g.arena()));
+    std::string truth = std::string(kTruthHeader) + "\n";
+    std::string cols = std::string(kColumnsHeader) + "\n";
+    RenderResult prev;
+    World prev_world;
+    Pose prev_pose;
+    for (int k = 0; k < s.frames; ++k) {
+      const World w = g.world_now();
+      RenderResult r = g.render();
+      write_pnm((tmp / frame_name("frame", k, "pgm")).string(), r.grey);
+      if (s.write_uyvy) write_file_atomic((tmp / frame_name("frame", k, "uyvy")).string(), r.uyvy);
+      if (s.write_rgb) write_pnm((tmp / frame_name("frame", k, "ppm")).string(), r.rgb);
+      if (s.write_flow && k > 0)
+        write_flo((tmp / frame_name("flow", k - 1, "flo")).string(),
+                  true_flow(prev_world, prev_pose, prev, w, g.pose(), r, g.camera()));
+      const FrameTruth t = g.truth();
+      truth += std::to_string(k) + "," + fixed(t.pose.x_in, 6) + "," + fixed(t.pose.y_in, 6) + "," +
+               fixed(t.pose.heading_deg, 6) + "," + fixed(t.step.forward_in, 6) + "," +
+               fixed(t.step.turn_deg, 6) + "," + (t.blocked ? "1" : "0") + "," +
+               fixed(t.clearance_in, 4) + "," + (t.collision ? "1" : "0") + "," +
+               std::to_string(t.left_ticks) + "," + std::to_string(t.right_ticks) + "," +
+               fixed(t.gain, 6) + "," + fixed(t.offset, 6) + "\n";
+      const ColumnTruth c = g.columns();
+      for (int x = 0; x < s.width; ++x)
+        cols += std::to_string(k) + "," + std::to_string(x) + "," +
+                fixed(c.distance_in[size_t(x)], 4) + "," + std::to_string(c.boundary_row[size_t(x)]) + "\n";
+      if (s.write_flow) {
+        prev = std::move(r);
+        prev_world = w;
+        prev_pose = g.pose();
+      }
+      if (k + 1 < s.frames) g.advance();
+    }
+    write_text(tmp / "truth.csv", truth);
+    write_text(tmp / "columns.csv", cols);
+    if (fs::exists(out, ec)) {
+      const fs::path old = out.string() + ".old." + std::to_string(getpid());
+      fs::rename(out, old);
+      fs::rename(tmp, out);
+      fs::remove_all(old, ec);
+    } else {
+      fs::rename(tmp, out);
+    }
+  } catch (const fs::filesystem_error &e) {
+    fs::remove_all(tmp, ec);
+    throw InputError(out.string() + ": " + e.code().message());
+  } catch (...) {
+    fs::remove_all(tmp, ec);
+    throw;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reading
+
+namespace {
+
+std::string read_text(const fs::path &p) {
+  auto b = read_file(p.string());
+  return std::string(b.begin(), b.end());
+}
+
+struct CsvCursor {
+  std::string where;
+  int line = 0;
+  [[noreturn]] void fail(const std::string &m) const {
+    throw InputError(where + ":" + std::to_string(line) + ": " + m);
+  }
+  double real(const std::string &s, const char *what, bool allow_inf = false) const {
+    if (allow_inf && s == "inf") return kInf;
+    errno = 0;
+    char *e = nullptr;
+    const double v = std::strtod(s.c_str(), &e);
+    if (s.empty() || *e != '\0' || errno == ERANGE || !std::isfinite(v) ||
+        s.find_first_of("xXpPnN") != std::string::npos)
+      fail(std::string(what) + ": not a number: '" + s + "'");
+    return v;
+  }
+  long long integer(const std::string &s, const char *what) const {
+    const size_t start = (!s.empty() && s[0] == '-') ? 1 : 0;
+    if (s.size() <= start || s.size() > 19 || s.find_first_not_of("0123456789", start) != std::string::npos)
+      fail(std::string(what) + ": not a whole number: '" + s + "'");
+    return std::stoll(s);
+  }
+};
+
+std::vector<std::string> split(const std::string &line) {
+  std::vector<std::string> f;
+  size_t pos = 0;
+  for (;;) {
+    const size_t e = line.find(',', pos);
+    f.push_back(line.substr(pos, e == std::string::npos ? std::string::npos : e - pos));
+    if (e == std::string::npos) break;
+    pos = e + 1;
+  }
+  return f;
+}
+
+// Lines without the trailing '\r' of files edited elsewhere.
+std::vector<std::string> lines_of(const std::string &text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) {
+    if (!l.empty() && l.back() == '\r') l.pop_back();
+    out.push_back(l);
+  }
+  return out;
+}
+
+}  // namespace
+
+SceneData read_scene(const std::string &dir) {
+  SceneData d;
+  d.dir = dir;
+  const fs::path root(dir);
+  std::error_code ec;
+  if (!fs::is_directory(root, ec)) throw InputError(dir + ": not a directory");
+
+  // scene.txt
+  const std::string where = (root / "scene.txt").string();
+  std::map<std::string, std::string> kv;
+  const std::vector<std::string> known = {"format", "spec",  "arena", "frames", "width",
+                                          "height", "fx",    "fy",    "cx",     "cy",
+                                          "cam_height_in", "tilt_deg", "cam_offset_in",
+                                          "script", "files", "units", "yuv"};
+  int ln = 0;
+  for (const auto &l : lines_of(read_text(root / "scene.txt"))) {
+    ++ln;
+    const auto first = l.find_first_not_of(" \t");
+    if (first == std::string::npos || l[first] == '#') continue;
+    const auto eq = l.find(" = ");
+    if (eq == std::string::npos) throw InputError(where + ":" + std::to_string(ln) + ": expected 'key = value'");
+    const std::string key = l.substr(first, eq - first), val = l.substr(eq + 3);
+    if (std::find(known.begin(), known.end(), key) == known.end())
+      throw InputError(where + ":" + std::to_string(ln) + ": unknown key '" + key + "'");
+    if (kv.count(key)) throw InputError(where + ":" + std::to_string(ln) + ": key '" + key + "' given twice");
+    kv[key] = val;
+  }
+  for (const char *req : {"format", "spec", "frames", "width", "height", "fx", "fy", "cx", "cy",
+                          "cam_height_in", "tilt_deg", "cam_offset_in", "files"})
+    if (!kv.count(req)) throw InputError(where + ": missing '" + req + "'");
+  if (kv["format"] != "bvb-scene-1")
+    throw InputError(where + ": unsupported format '" + kv["format"] + "' (expected bvb-scene-1)");
+  try {
+    d.spec = parse_scene_spec(kv["spec"]);
+  } catch (const InputError &e) {
+    throw InputError(where + ": " + e.what());
+  }
+  CsvCursor sc{where, 0};
+  d.frames = int(sc.integer(kv["frames"], "frames"));
+  d.camera = Camera::standard(int(sc.integer(kv["width"], "width")), int(sc.integer(kv["height"], "height")));
+  if (d.frames < 1 || d.frames > kMaxFrames) throw InputError(where + ": frames out of range");
+  if (d.camera.width != d.spec.width || d.camera.height != d.spec.height)
+    throw InputError(where + ": width/height disagree with the spec's size");
+  if (d.spec.frames != d.frames) throw InputError(where + ": frames disagrees with the spec");
+  d.camera.fx = sc.real(kv["fx"], "fx");
+  d.camera.fy = sc.real(kv["fy"], "fy");
+  d.camera.cx = sc.real(kv["cx"], "cx");
+  d.camera.cy = sc.real(kv["cy"], "cy");
+  d.camera.cam_height_in = sc.real(kv["cam_height_in"], "cam_height_in");
+  d.camera.tilt_deg = sc.real(kv["tilt_deg"], "tilt_deg");
+  d.camera.cam_offset_in = sc.real(kv["cam_offset_in"], "cam_offset_in");
+  if (!(d.camera.fx > 0) || !(d.camera.fy > 0)) throw InputError(where + ": fx and fy must be > 0");
+  {
+    std::istringstream fl(kv["files"]);
+    bool pgm = false;
+    for (std::string f; fl >> f;) {
+      if (f == "pgm") pgm = true;
+      else if (f == "uyvy") d.has_uyvy = true;
+      else if (f == "ppm") d.has_rgb = true;
+      else if (f == "flo") d.has_flow = true;
+      else throw InputError(where + ": files: unknown kind '" + f + "'");
+    }
+    if (!pgm) throw InputError(where + ": files: 'pgm' missing");
+  }
+  d.arena = parse_arena(read_text(root / "arena.txt"), (root / "arena.txt").string());
+
+  // truth.csv
+  {
+    CsvCursor c{(root / "truth.csv").string(), 0};
+    const auto lines = lines_of(read_text(root / "truth.csv"));
+    if (lines.empty() || lines[0] != kTruthHeader) {
+      c.line = 1;
+      c.fail(std::string("expected the header '") + kTruthHeader + "'");
+    }
+    for (size_t i = 1; i < lines.size(); ++i) {
+      c.line = int(i + 1);
+      if (lines[i].empty()) continue;
+      const auto f = split(lines[i]);
+      if (f.size() != 13) c.fail("expected 13 fields, found " + std::to_string(f.size()));
+      FrameTruth t;
+      t.frame = int(c.integer(f[0], "frame"));
+      if (t.frame != int(d.truth.size())) c.fail("frame " + f[0] + " out of sequence");
+      t.pose = {c.real(f[1], "x_in"), c.real(f[2], "y_in"), c.real(f[3], "heading_deg")};
+      t.step = {c.real(f[4], "step_fwd_in"), c.real(f[5], "step_turn_deg")};
+      if (f[6] != "0" && f[6] != "1") c.fail("blocked must be 0 or 1");
+      t.blocked = f[6] == "1";
+      t.clearance_in = c.real(f[7], "clearance_in", true);
+      if (f[8] != "0" && f[8] != "1") c.fail("collision must be 0 or 1");
+      t.collision = f[8] == "1";
+      t.left_ticks = c.integer(f[9], "left_ticks");
+      t.right_ticks = c.integer(f[10], "right_ticks");
+      t.gain = c.real(f[11], "gain");
+      t.offset = c.real(f[12], "offset");
+      d.truth.push_back(t);
+    }
+    if (int(d.truth.size()) != d.frames)
+      throw InputError(c.where + ": " + std::to_string(d.truth.size()) + " frames, scene.txt says " +
+                       std::to_string(d.frames));
+  }
+
+  // columns.csv
+  {
+    CsvCursor c{(root / "columns.csv").string(), 0};
+    const auto lines = lines_of(read_text(root / "columns.csv"));
+    if (lines.empty() || lines[0] != kColumnsHeader) {
+      c.line = 1;
+      c.fail(std::string("expected the header '") + kColumnsHeader + "'");
+    }
+    const int W = d.camera.width, H = d.camera.height;
+    d.columns.assign(size_t(d.frames), ColumnTruth{});
+    size_t expect = 0;
+    for (size_t i = 1; i < lines.size(); ++i) {
+      c.line = int(i + 1);
+      if (lines[i].empty()) continue;
+      const auto f = split(lines[i]);
+      if (f.size() != 4) c.fail("expected 4 fields, found " + std::to_string(f.size()));
+      const long long k = c.integer(f[0], "frame"), x = c.integer(f[1], "column");
+      if (k != (long long)(expect / size_t(W)) || x != (long long)(expect % size_t(W)))
+        c.fail("expected frame " + std::to_string(expect / size_t(W)) + " column " +
+               std::to_string(expect % size_t(W)));
+      if (k >= d.frames) c.fail("more rows than frames x width");
+      const double dist = c.real(f[2], "distance_in", true);
+      const long long row = c.integer(f[3], "boundary_row");
+      if (row < -1 || row >= H) c.fail("boundary_row out of range -1.." + std::to_string(H - 1));
+      auto &col = d.columns[size_t(k)];
+      col.distance_in.push_back(dist);
+      col.boundary_row.push_back(int(row));
+      ++expect;
+    }
+    if (expect != size_t(d.frames) * size_t(W))
+      throw InputError(c.where + ": " + std::to_string(expect) + " rows, expected frames x width = " +
+                       std::to_string(size_t(d.frames) * size_t(W)));
+  }
+
+  for (int k = 0; k < d.frames; ++k) {
+    std::vector<std::string> need = {d.file("frame", k, "pgm")};
+    if (d.has_uyvy) need.push_back(d.file("frame", k, "uyvy"));
+    if (d.has_rgb) need.push_back(d.file("frame", k, "ppm"));
+    if (d.has_flow && k + 1 < d.frames) need.push_back(d.file("flow", k, "flo"));
+    for (const auto &p : need)
+      if (!fs::is_regular_file(p, ec)) throw InputError(p + ": missing (scene.txt lists it)");
+  }
+  return d;
+}
+
+Image SceneData::grey(int k) const {
+  if (k < 0 || k >= frames) throw InputError(dir + ": no frame " + std::to_string(k));
+  Image g = read_pnm(file("frame", k, "pgm"));
+  if (g.width != camera.width || g.height != camera.height || g.channels != 1)
+    throw InputError(file("frame", k, "pgm") + ": not a " + std::to_string(camera.width) + "x" +
+                     std::to_string(camera.height) + " grey image");
+  return g;
+}
+
+std::vector<uint8_t> SceneData::uyvy(int k) const {
+  if (!has_uyvy || k < 0 || k >= frames) throw InputError(dir + ": no UYVY frame " + std::to_string(k));
+  return read_uyvy(file("frame", k, "uyvy"), camera.width, camera.height);
+}
+
+Image SceneData::rgb(int k) const {
+  if (!has_rgb || k < 0 || k >= frames) throw InputError(dir + ": no RGB frame " + std::to_string(k));
+  Image g = read_pnm(file("frame", k, "ppm"));
+  if (g.width != camera.width || g.height != camera.height || g.channels != 3)
+    throw InputError(file("frame", k, "ppm") + ": not a " + std::to_string(camera.width) + "x" +
+                     std::to_string(camera.height) + " RGB image");
+  return g;
+}
+
+FlowField SceneData::flow(int k) const {
+  if (!has_flow || k < 0 || k + 1 >= frames) throw InputError(dir + ": no flow for frame " + std::to_string(k));
+  FlowField f = read_flo(file("flow", k, "flo"));
+  if (f.width != camera.width || f.height != camera.height)
+    throw InputError(file("flow", k, "flo") + ": flow size differs from the frames'");
+  return f;
+}
+
+}  // namespace bvb
