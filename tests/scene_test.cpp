@@ -615,6 +615,30 @@ TEST(SceneRender, OddSizesAndTiming) {
   EXPECT_LT(ms, 10.0);
 }
 
+TEST(SceneGenerator, ClosedLoopStopsAtObstaclesButWheelsTurn) {
+  SceneSpec s = parse_scene_spec("path=S1,start=0:0:0,speed=0.5,turn_rate=5,tpi=50");
+  SceneGenerator g(s, wall_world(10));  // face at x = 10: the robot's disc touches it at x = 7
+  int refused = 0;
+  for (int k = 0; k < 20; ++k) {
+    const bool moved = g.advance(g.drive_step(Drive::Forward), true);
+    refused += !moved;
+    EXPECT_FALSE(g.truth().collision) << k;
+    if (!moved) {
+      EXPECT_DOUBLE_EQ(g.truth().step.forward_in, 0);
+    }
+  }
+  EXPECT_NEAR(g.pose().x_in, 7.0, 1e-9);  // touching (distance = radius) is not a collision
+  EXPECT_EQ(refused, 20 - 14);
+  EXPECT_TRUE(g.truth().blocked);
+  EXPECT_EQ(g.truth().left_ticks, 20 * 25);  // the wheels spun on
+  ASSERT_TRUE(g.advance(g.drive_step(Drive::Left), true));
+  EXPECT_DOUBLE_EQ(g.pose().heading_deg, 5);
+  g.advance(g.drive_step(Drive::Right), true);
+  g.advance(g.drive_step(Drive::Right), true);
+  EXPECT_DOUBLE_EQ(g.pose().heading_deg, -5);
+  EXPECT_EQ(g.frame(), 23);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Arenas
 

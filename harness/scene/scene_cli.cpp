@@ -83,7 +83,11 @@ int scene_command(int argc, char **argv) {
     }
     if (!have_spec) return usage_error("--spec is required");
     if (out.empty()) return usage_error("--out is required");
-    write_scene(parse_scene_spec(spec), out, force);
+    const SceneSpec parsed = parse_scene_spec(spec);
+    write_scene(parsed, out, force);
+    const SceneData d = read_scene(out);
+    std::printf("%s: %d frames %dx%d, arena %s\n", out.c_str(), d.frames, d.camera.width,
+                d.camera.height, d.arena.name.c_str());
     return 0;
   } catch (const InputError &e) {
     std::fprintf(stderr, "scene: %s\n", e.what());

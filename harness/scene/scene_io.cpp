@@ -363,6 +363,16 @@ Step SceneGenerator::next_step() {
   return {0, avoid_dir_ * spec_.turn_rate_deg};
 }
 
+Step SceneGenerator::drive_step(Drive d) const {
+  switch (d) {
+    case Drive::Forward: return {spec_.speed_in, 0};
+    case Drive::Left: return {0, spec_.turn_rate_deg};
+    case Drive::Right: return {0, -spec_.turn_rate_deg};
+    case Drive::Stop: break;
+  }
+  return {};
+}
+
 bool SceneGenerator::advance(const Step &step, bool stop_at_obstacles) {
   const Pose next = step_pose(pose_, step.forward_in, step.turn_deg);
   bool moved = true;

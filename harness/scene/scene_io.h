@@ -101,6 +101,9 @@ struct FrameTruth {
   double gain = 1, offset = 0;
 };
 
+// A pipeline's steering decision; SceneGenerator::drive_step turns it into one frame's motion.
+enum class Drive { Stop, Forward, Left, Right };
+
 // Generates a scene one frame at a time. Scripted use: render()/truth()/columns() for the
 // current frame, then advance(). Closed loop: advance(step, true) with the vision's command;
 // the robot then stops short of obstacles (the step is not taken when it would collide, though
@@ -126,6 +129,8 @@ class SceneGenerator {
 
   // The spec's path's step from the current frame (for avoid: the oracle's decision).
   Step next_step();
+  // Forward: spec speed; Left/Right: a turn in place at the spec's turn rate; Stop: nothing.
+  Step drive_step(Drive d) const;
   // Moves to the next frame. Returns false when stop_at_obstacles refused a colliding step.
   bool advance(const Step &step, bool stop_at_obstacles);
   bool advance() { return advance(next_step(), false); }

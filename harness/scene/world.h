@@ -119,7 +119,8 @@ void finalize_world(World &w);
 // mover, at its frame position (Obstacle::mover tells which).
 World world_at_frame(const World &w, int frame);
 
-// Whether the robot's disc of radius_in about the pose's axle centre overlaps an obstacle.
+// Whether the robot's disc of radius_in about the pose's axle centre overlaps an obstacle
+// (touching, at distance exactly radius_in, is not a collision).
 bool collides(const World &w, const Pose &pose, double radius_in = kRobotRadiusIn);
 // The free run ahead: the least forward distance from the robot's front (radius_in ahead of the
 // axle centre) to any obstacle inside the corridor of the robot's width (|lateral| <= radius_in,
