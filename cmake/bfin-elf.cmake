@@ -12,7 +12,7 @@ set(BFIN_RUN ${BFIN_TOOLCHAIN_DIR}/bin/bfin-elf-run)
 # No C library: compiler checks must not try to link an executable.
 set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
 set(CMAKE_C_FLAGS_INIT "-mcpu=bf537 -ffreestanding")
-set(CMAKE_ASM_FLAGS_INIT "-mcpu=bf537")
+set(CMAKE_ASM_FLAGS_INIT "-mcpu=bf537 -ffreestanding")
 set(CMAKE_EXE_LINKER_FLAGS_INIT "-mcpu=bf537 -nostdlib -nostartfiles")
 set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
 set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)

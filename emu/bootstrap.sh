@@ -155,7 +155,10 @@ stage_unpack() {
   tar -C "$src" -xf "$(src_tarball '/usr/src/binutils/binutils-*.tar.xz')"
   tar -C "$src" -xf "$(src_tarball /usr/src/gdb.tar.xz)"
   tar -C "$src" -xf "$(src_tarball '/usr/src/gcc-12/gcc-*-dfsg.tar.xz')"
-  ( cd "$src" && mv binutils-* binutils && mv gcc-* gcc && test -d gdb )
+  # From newlib only libgloss's Blackfin headers (MMR names: <blackfin.h>, <defBF537.h>), which
+  # the simulator's test suite and bare-metal code include; no C library is built.
+  tar -C "$src" -xf "$(src_tarball '/usr/src/newlib/newlib-*.tar.xz')" --wildcards '*/libgloss/bfin/include/*'
+  ( cd "$src" && mv binutils-* binutils && mv gcc-* gcc && mv newlib-* newlib && test -d gdb )
   # Debian strips the GFDL manuals from gcc; its own patch lets the build go on without them.
   ( cd "$src/gcc" && patch -p2 < /usr/src/gcc-12/debian/patches/gcc-gfdl-build.diff )
   if [ -d "$here/patches" ]; then
@@ -196,6 +199,12 @@ stage_gcc() {
   make install-gcc install-target-libgcc
 }
 
+stage_headers() {
+  mkdir -p "$stage_dir/$target/include"
+  cp -a "$work/src/newlib/libgloss/bfin/include/." "$stage_dir/$target/include/"
+  echo '#include <blackfin.h>' | "$target-gcc" -mcpu=bf537 -E -x c - >/dev/null
+}
+
 stage_smoke() {
   cat > smoke.c <<'EOF'
 int twice(int x) { return 2 * x; }
@@ -231,6 +240,7 @@ run_stage unpack stage_unpack
 run_stage binutils stage_binutils
 run_stage sim stage_sim
 run_stage gcc stage_gcc
+run_stage headers stage_headers
 run_stage smoke stage_smoke
 
 {

@@ -1,0 +1,136 @@
+#include "simdriver.h"
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char **environ;
+
+namespace bvb::sim {
+
+namespace {
+
+constexpr size_t kMaxOutput = 64 * 1024;
+
+std::string hex(uint32_t v) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "0x%x", v);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<std::string> command_line(const RunSpec &spec) {
+  std::vector<std::string> args = {spec.simulator, "--environment", "operating", "--model", "bf537",
+                                   "--memory-region", "0," + hex(kSdramSize)};
+  for (const auto &m : spec.maps) {
+    args.push_back("--memory-mapfile");
+    args.push_back(m.path);
+    args.push_back("--memory-region");
+    args.push_back(hex(m.address) + "," + hex(m.size));
+  }
+  args.push_back(spec.elf);
+  return args;
+}
+
+std::string find_simulator(const std::string &default_path) {
+  const char *env = std::getenv("BFBENCH_SIM");
+  std::string path = env && *env ? env : default_path;
+  if (access(path.c_str(), X_OK) != 0)
+    throw SetupError("simulator not found or not executable: " + path +
+                     " (run emu/bootstrap.sh, or set BFBENCH_SIM)");
+  return path;
+}
+
+RunResult run(const RunSpec &spec) {
+  if (access(spec.simulator.c_str(), X_OK) != 0)
+    throw SetupError("simulator not found or not executable: " + spec.simulator);
+  if (access(spec.elf.c_str(), R_OK) != 0) throw SetupError("firmware not found: " + spec.elf);
+
+  auto args = command_line(spec);
+  std::vector<char *> argv;
+  for (auto &a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+
+  int pipefd[2];
+  if (pipe2(pipefd, O_CLOEXEC) != 0) throw SetupError(std::string("pipe: ") + std::strerror(errno));
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_adddup2(&fa, pipefd[1], 1);
+  posix_spawn_file_actions_adddup2(&fa, pipefd[1], 2);
+  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+  pid_t pid;
+  int rc = posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  close(pipefd[1]);
+  if (rc != 0) {
+    close(pipefd[0]);
+    throw SetupError("cannot start " + spec.simulator + ": " + std::strerror(rc));
+  }
+
+  RunResult r;
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::chrono::milliseconds(int64_t(spec.wall_timeout_s * 1000));
+  bool timed_out = false;
+  char buf[4096];
+  for (;;) {
+    auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+                    deadline - std::chrono::steady_clock::now()).count();
+    if (left <= 0) {
+      timed_out = true;
+      kill(pid, SIGKILL);
+      break;
+    }
+    pollfd p{pipefd[0], POLLIN, 0};
+    int n = poll(&p, 1, int(std::min<int64_t>(left, 1000)));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) continue;
+    ssize_t got = read(pipefd[0], buf, sizeof buf);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) break;
+    if (r.output.size() < kMaxOutput) r.output.append(buf, size_t(got));
+  }
+  close(pipefd[0]);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (timed_out) {
+    r.ending = Ending::TimedOut;
+  } else if (WIFEXITED(status)) {
+    r.ending = Ending::Exited;
+    r.exit_code = WEXITSTATUS(status);
+  } else {
+    r.ending = Ending::Signalled;
+    r.signal = WTERMSIG(status);
+  }
+  return r;
+}
+
+std::string describe(const RunResult &r) {
+  std::string what;
+  switch (r.ending) {
+    case Ending::Exited: what = "simulator exited with status " + std::to_string(r.exit_code); break;
+    case Ending::Signalled: what = std::string("simulator killed by signal ") + strsignal(r.signal); break;
+    case Ending::TimedOut: what = "simulator did not finish in time (killed)"; break;
+  }
+  // The simulator's own last line says why, e.g. "_cec_raise: double fault at 0x...".
+  std::string out = r.output;
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  if (!out.empty()) {
+    auto nl = out.rfind('\n');
+    what += ": " + out.substr(nl == std::string::npos ? 0 : nl + 1);
+  }
+  return what;
+}
+
+}  // namespace bvb::sim

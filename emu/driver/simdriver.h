@@ -1,0 +1,52 @@
+// Runs a Blackfin ELF in the GNU simulator (bfin-elf-run) as the SRV-1 board: a BF537 in the
+// simulator's operating environment with the board's 32 MB of SDRAM at 0, plus host files mapped
+// into the address space. Knows nothing of kernels: it maps, runs, and reports how the run ended.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace bvb::sim {
+
+// The simulator or the ELF is missing or cannot be started: a set-up problem, not a kernel's.
+struct SetupError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct MappedFile {
+  std::string path;  // host file; the simulator maps it shared, so writes land in it
+  uint32_t address;
+  uint32_t size;     // bytes, at most the file's size
+};
+
+struct RunSpec {
+  std::string simulator;  // path of bfin-elf-run
+  std::string elf;
+  std::vector<MappedFile> maps;
+  // Backstop only: firmware enforces cycle limits itself; this catches a simulator that never
+  // returns (e.g. a kernel that masked the watchdog). Never a measurement.
+  double wall_timeout_s = 600;
+};
+
+enum class Ending { Exited, Signalled, TimedOut };
+
+struct RunResult {
+  Ending ending = Ending::Exited;
+  int exit_code = -1;   // Exited
+  int signal = 0;       // Signalled: the host signal that ended bfin-elf-run
+  std::string output;   // what the simulator printed (stdout and stderr), capped
+};
+
+// SDRAM on the SRV-1 board.
+constexpr uint32_t kSdramSize = 32u << 20;
+
+RunResult run(const RunSpec &spec);
+std::vector<std::string> command_line(const RunSpec &spec);
+std::string describe(const RunResult &r);
+
+// The simulator named by $BFBENCH_SIM, else the given default; checked to be executable.
+std::string find_simulator(const std::string &default_path);
+
+}  // namespace bvb::sim

@@ -1,0 +1,135 @@
+/* The monitor: reads the window's commands, places each command's buffers where it asks, calls
+ * the kernel through the checked-call trampoline, and writes the results back into the window. */
+#include <stdint.h>
+
+#include "bvb/mailbox.h"
+#include "registry.h"
+#include "runtime.h"
+
+extern uint8_t _sdram_arena_start[], _sdram_arena_end[];
+extern uint8_t _l1a_arena_start[], _l1a_arena_end[];
+extern uint8_t _l1b_arena_start[], _l1b_arena_end[];
+extern uint8_t _scratch_arena_start[], _scratch_arena_end[];
+
+struct arena {
+  uint8_t *start, *end, *next;
+};
+
+static struct arena arenas[BVB_PLACE_WINDOW];
+
+static uint32_t registry_hash(void) {
+  uint32_t h = 2166136261u;
+  for (uint32_t k = 0; k < bvb_kernel_count; ++k) {
+    const char *p = bvb_kernels[k].name;
+    do {
+      h ^= (uint8_t)*p;
+      h *= 16777619u;
+    } while (*p++);
+  }
+  return h;
+}
+
+static void reset_arenas(void) {
+  arenas[BVB_PLACE_SDRAM] = (struct arena){_sdram_arena_start, _sdram_arena_end, _sdram_arena_start};
+  arenas[BVB_PLACE_L1A] = (struct arena){_l1a_arena_start, _l1a_arena_end, _l1a_arena_start};
+  arenas[BVB_PLACE_L1B] = (struct arena){_l1b_arena_start, _l1b_arena_end, _l1b_arena_start};
+  arenas[BVB_PLACE_SCRATCH] =
+      (struct arena){_scratch_arena_start, _scratch_arena_end, _scratch_arena_start};
+}
+
+static int valid_buffer(const struct bvb_buffer *b, uint32_t window_size) {
+  if (b->place >= BVB_PLACE_COUNT || (b->guard & 3) || b->align < 4 || (b->align & (b->align - 1)) ||
+      b->skew >= b->align)
+    return 0;
+  uint32_t span = b->size + 2 * b->guard;
+  if (b->size > window_size || b->guard > window_size || span > window_size) return 0;
+  return b->offset <= window_size - span;
+}
+
+/* Returns the data address for buffer b, or 0 when its memory is full. */
+static uint8_t *place_buffer(const struct bvb_buffer *b, uint8_t *window) {
+  if (b->place == BVB_PLACE_WINDOW) return window + b->offset + b->guard;
+  struct arena *a = &arenas[b->place];
+  uintptr_t data = ((uintptr_t)a->next + b->guard + b->align - 1) & ~(uintptr_t)(b->align - 1);
+  data += b->skew;
+  uintptr_t end = data + b->size + b->guard;
+  if (end > (uintptr_t)a->end || end < data) return 0;
+  a->next = (uint8_t *)end;
+  return (uint8_t *)data;
+}
+
+static void run_command(struct bvb_command *c, uint8_t *window, uint32_t window_size,
+                        uint32_t null_cycles) {
+  static struct bvb_call call;
+  uint8_t *addr[BVB_MAX_BUFS];
+
+  c->status = BVB_BAD_COMMAND;
+  if (c->kernel >= bvb_kernel_count) { c->detail = BVB_BAD_KERNEL; return; }
+  if (c->impl >= BVB_IMPL_COUNT) { c->detail = BVB_BAD_IMPL; return; }
+  if (c->nargs > BVB_MAX_ARGS) { c->detail = BVB_BAD_NARGS; return; }
+  if (c->nbufs > BVB_MAX_BUFS) { c->detail = BVB_BAD_NBUFS; return; }
+  for (uint32_t i = 0; i < c->nbufs; ++i)
+    if (!valid_buffer(&c->bufs[i], window_size)) { c->detail = BVB_BAD_BUFFER; return; }
+  for (uint32_t i = 0; i < c->nargs; ++i)
+    if ((c->argbuf >> i & 1) && c->args[i] >= c->nbufs) { c->detail = BVB_BAD_ARGBUF; return; }
+  void (*fn)(void) = bvb_kernels[c->kernel].entry[c->impl];
+  if (!fn) { c->status = BVB_NO_IMPL; return; }
+
+  reset_arenas();
+  for (uint32_t i = 0; i < c->nbufs; ++i) {
+    const struct bvb_buffer *b = &c->bufs[i];
+    addr[i] = place_buffer(b, window);
+    if (!addr[i]) { c->status = BVB_NO_SPACE; c->detail = i; return; }
+    if (b->place != BVB_PLACE_WINDOW)
+      memcpy(addr[i] - b->guard, window + b->offset, b->size + 2 * b->guard);
+    c->buf_addr[i] = (uint32_t)(uintptr_t)addr[i];
+  }
+
+  memset(&call, 0, sizeof call);
+  call.fn = fn;
+  for (uint32_t i = 0; i < BVB_MAX_ARGS; ++i)
+    call.args[i] = i >= c->nargs ? 0 : (c->argbuf >> i & 1) ? (uint32_t)(uintptr_t)addr[c->args[i]] : c->args[i];
+  call.limit = c->cycle_limit ? c->cycle_limit : BVB_DEFAULT_CYCLE_LIMIT;
+  uint32_t status = bvb_call(&call);
+
+  for (uint32_t i = 0; i < c->nbufs; ++i) {
+    const struct bvb_buffer *b = &c->bufs[i];
+    if (b->place != BVB_PLACE_WINDOW)
+      memcpy(window + b->offset, addr[i] - b->guard, b->size + 2 * b->guard);
+  }
+  c->cycles = call.cycles > null_cycles ? call.cycles - null_cycles : 0;
+  c->ret = call.ret;
+  c->abi_bad = call.abi_bad;
+  c->fault_seqstat = call.seqstat;
+  c->fault_pc = call.pc;
+  c->fault_addr = call.addr;
+  c->status = status;
+}
+
+int main(void) {
+  uint8_t *window = (uint8_t *)BVB_WINDOW_ADDR;
+  struct bvb_header *h = (struct bvb_header *)window;
+
+  h->registry_count = bvb_kernel_count;
+  h->registry_hash = registry_hash();
+  if (h->magic != BVB_MAGIC || h->version != BVB_VERSION || h->window_size > BVB_WINDOW_MAX ||
+      h->ncommands > (h->window_size - sizeof *h) / sizeof(struct bvb_command)) {
+    h->state = BVB_FW_BAD_HEADER;
+    return 1;
+  }
+  h->state = BVB_FW_RUNNING;
+
+  static struct bvb_call null_call;
+  null_call.fn = bvb_null;
+  null_call.limit = 100000;
+  bvb_call(&null_call);
+  h->null_call_cycles = null_call.cycles;
+
+  struct bvb_command *cmds = (struct bvb_command *)(h + 1);
+  for (uint32_t i = h->first; i < h->ncommands; ++i) {
+    h->current = i;
+    run_command(&cmds[i], window, h->window_size, null_call.cycles);
+  }
+  h->state = BVB_FW_DONE;
+  return 0;
+}

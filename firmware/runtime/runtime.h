@@ -1,0 +1,72 @@
+/* Firmware runtime internals shared by the C monitor and the assembly start-up and trampoline. */
+#ifndef BVB_RUNTIME_H
+#define BVB_RUNTIME_H
+
+/* Byte offsets into struct bvb_call and struct bvb_call_state, for the assembly. */
+#define CALL_FN 0
+#define CALL_ARGS 4
+#define CALL_CYCLES 52
+#define CALL_RET 56
+#define CALL_ABI 60
+#define CALL_SEQSTAT 64
+#define CALL_PC 68
+#define CALL_ADDR 72
+#define CALL_LIMIT 76
+
+#define ST_CALL 0
+#define ST_MONITOR_SP 4
+#define ST_EXPECT_SP 8
+#define ST_T0 12
+#define ST_IN_CALL 16
+#define ST_STATUS 20
+#define ST_SAVE_R0 24
+#define ST_SAVE_ASTAT 28
+
+/* Values the trampoline loads into every callee-saved register before a call; a kernel that
+ * returns with another value there broke the ABI. Odd, distinct, and not small, so no kernel
+ * reproduces them by accident. */
+#define CANARY_R4 0x5EED0441
+#define CANARY_R5 0x5EED0553
+#define CANARY_R6 0x5EED0665
+#define CANARY_R7 0x5EED0777
+#define CANARY_P3 0x5EED0389
+#define CANARY_P4 0x5EED049B
+#define CANARY_P5 0x5EED05AD
+#define CANARY_FP 0x5EED0FBF
+
+/* BF537 core MMRs */
+#define EVT0 0xFFE02000
+#define IMASK_MMR 0xFFE02104
+#define TCNTL 0xFFE03000
+#define TPERIOD 0xFFE03004
+#define TSCALE 0xFFE03008
+#define TCOUNT 0xFFE0300C
+#define DCPLB_FAULT_ADDR 0xFFE00008
+#define TMPWR 1
+#define TMREN 2
+
+#ifndef __ASSEMBLER__
+#include <stdint.h>
+
+struct bvb_call {
+  void (*fn)(void);
+  uint32_t args[12];
+  uint32_t cycles;  /* raw: CYCLES after minus CYCLES before, call overhead included */
+  uint32_t ret;
+  uint32_t abi_bad;
+  uint32_t seqstat;
+  uint32_t pc;
+  uint32_t addr;
+  uint32_t limit;   /* watchdog cycles */
+};
+
+/* Calls c->fn with c->args under the ABI check and the watchdog. Returns BVB_OK when the
+ * function returned, BVB_FAULT or BVB_HANG when it was abandoned. */
+uint32_t bvb_call(struct bvb_call *c);
+void bvb_null(void);
+
+void *memcpy(void *dst, const void *src, unsigned n);
+void *memset(void *dst, int c, unsigned n);
+#endif
+
+#endif

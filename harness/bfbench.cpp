@@ -1,0 +1,443 @@
+// bfbench: check, benchmark and run Blackfin vision kernels in the GNU simulator.
+// Exit status: 0 success, 1 a check or budget failed, 2 bad usage or bad input.
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <functional>
+#include <map>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <unistd.h>
+
+#include "bench.h"
+#include "check.h"
+#include "family.h"
+#include "io.h"
+#include "patterns.h"
+#include "simdriver.h"
+#include "target.h"
+
+namespace bvb {
+int extra_command(const std::string &name, int argc, char **argv, bool *handled);
+}
+
+namespace {
+
+using namespace bvb;
+
+struct Usage : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+const char *kMainHelp =
+    "usage: bfbench COMMAND [options]\n"
+    "\n"
+    "Checks, benchmarks and runs Blackfin vision kernels inside the GNU Blackfin simulator.\n"
+    "\n"
+    "commands:\n"
+    "  list                     kernels and their implementations\n"
+    "  check                    C reference (host and Blackfin) vs assembly, bit for bit\n"
+    "  bench                    simulator cycles per call and per pixel, C vs assembly\n"
+    "  run KERNEL               one kernel on given frames\n"
+    "  budgets                  compare the bench with ci/budgets.json\n"
+    "\n"
+    "'bfbench COMMAND --help' describes each. Exit status: 0 success, 1 a check or budget\n"
+    "failed, 2 bad usage or bad input.\n";
+
+// Minimal option scanner: --name value, --name=value, and flags.
+class Args {
+ public:
+  Args(int argc, char **argv, int first) {
+    for (int i = first; i < argc; ++i) a_.push_back(argv[i]);
+  }
+  bool flag(const std::string &name) {
+    for (size_t i = 0; i < a_.size(); ++i)
+      if (a_[i] == name) {
+        a_.erase(a_.begin() + long(i));
+        return true;
+      }
+    return false;
+  }
+  std::vector<std::string> values(const std::string &name, const std::string &alias = "") {
+    std::vector<std::string> out;
+    for (size_t i = 0; i < a_.size();) {
+      const std::string &s = a_[i];
+      if (s == name || (!alias.empty() && s == alias)) {
+        if (i + 1 >= a_.size()) throw Usage(s + " needs a value");
+        out.push_back(a_[i + 1]);
+        a_.erase(a_.begin() + long(i), a_.begin() + long(i) + 2);
+      } else if (s.rfind(name + "=", 0) == 0) {
+        out.push_back(s.substr(name.size() + 1));
+        a_.erase(a_.begin() + long(i));
+      } else {
+        ++i;
+      }
+    }
+    return out;
+  }
+  std::string value(const std::string &name, const std::string &fallback, const std::string &alias = "") {
+    auto v = values(name, alias);
+    if (v.size() > 1) throw Usage(name + " given more than once");
+    return v.empty() ? fallback : v[0];
+  }
+  std::vector<std::string> positional() {
+    std::vector<std::string> out;
+    for (auto &s : a_) {
+      if (s.size() > 1 && s[0] == '-') throw Usage("unknown option " + s);
+      out.push_back(s);
+    }
+    a_.clear();
+    return out;
+  }
+
+ private:
+  std::vector<std::string> a_;
+};
+
+long to_long(const std::string &s, const std::string &what, long lo, long hi) {
+  char *end = nullptr;
+  errno = 0;
+  long v = std::strtol(s.c_str(), &end, 10);
+  if (s.empty() || *end || errno || v < lo || v > hi)
+    throw Usage(what + " wants an integer in " + std::to_string(lo) + ".." + std::to_string(hi) +
+                ", got '" + s + "'");
+  return v;
+}
+
+Size parse_size(const std::string &s) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 ||
+      w > kMaxFrameDim || h > kMaxFrameDim)
+    throw Usage("--size wants WxH (1.." + std::to_string(kMaxFrameDim) + "), got '" + s + "'");
+  return {w, h};
+}
+
+int default_jobs() {
+  unsigned n = std::thread::hardware_concurrency();
+  return n ? int(n) : 2;
+}
+
+bool help_requested(Args &args, const char *text) {
+  if (args.flag("--help") || args.flag("-h")) {
+    std::fputs(text, stdout);
+    return true;
+  }
+  return false;
+}
+
+Target make_target(Args &args, bool selftest = false) {
+  FirmwareImage fw = selftest ? selftest_firmware() : product_firmware();
+  std::string elf = args.value("--firmware", "");
+  if (!elf.empty()) fw.elf = elf;
+  return Target(fw, default_simulator());
+}
+
+// ---------------------------------------------------------------------------------------------
+
+int cmd_list(Args &args) {
+  if (help_requested(args, "usage: bfbench list\n\nLists every kernel: its family and implementations.\n"))
+    return 0;
+  args.positional();
+  for (const auto &k : Registry::product().kernels()) {
+    const Family *f = family_of(k.name);
+    std::printf("%-24s %-14s c%s\n", k.name.c_str(), f ? f->name.c_str() : "-", k.has_asm ? " asm" : "");
+  }
+  return 0;
+}
+
+void print_check_report(const Checker &ck, size_t max_per_kernel) {
+  for (const auto &kv : ck.tally()) {
+    std::string line = "  " + kv.first;
+    line.resize(26, ' ');
+    for (const auto &it : kv.second)
+      line += it.first + ": " + std::to_string(it.second.calls - it.second.failed) + "/" +
+              std::to_string(it.second.calls) + " ok   ";
+    std::printf("%s\n", line.c_str());
+  }
+  std::map<std::string, size_t> shown;
+  for (const auto &f : ck.failures()) {
+    if (shown[f.kernel + f.impl]++ >= max_per_kernel) continue;
+    std::printf("FAILED %s (%s) %s, seed %u: %s: %s\n", f.kernel.c_str(), f.impl.c_str(),
+                f.case_name.c_str(), f.seed, failure_kind_name(f.kind), f.message.c_str());
+    std::printf("  replay: bfbench check -k %s --seed %u\n", f.kernel.c_str(), f.seed);
+  }
+}
+
+int cmd_check(Args &args) {
+  if (help_requested(args,
+                     "usage: bfbench check [-k GLOB] [--seed N] [--seeds COUNT] [-j N] [--campaign]\n"
+                     "                     [--firmware ELF] [-v]\n\n"
+                     "Runs every kernel's C reference on the Blackfin and its assembly in the simulator\n"
+                     "on seeded random, crafted and real frames over many sizes, and compares both with\n"
+                     "the host-compiled C reference, bit for bit; guard bands, callee-saved registers,\n"
+                     "faults and hangs are checked too. The seed is printed; --seed replays it.\n"
+                     "  -k GLOB       kernels to check (shell glob, default *)\n"
+                     "  --seed N      first seed (default: from the clock)\n"
+                     "  --seeds COUNT seeds N, N+1, ... (default 1)\n"
+                     "  -j N          simulator processes at once (default: cores)\n"
+                     "  --campaign    larger sizes (up to 640x480) and more random cases\n"))
+    return 0;
+  CheckOptions opts;
+  opts.kernel_glob = args.value("-k", "*", "--kernel");
+  std::string seed = args.value("--seed", "");
+  opts.seed = seed.empty() ? uint32_t(std::time(nullptr)) % 1000000 : uint32_t(to_long(seed, "--seed", 0, 4294967295L));
+  long seeds = to_long(args.value("--seeds", "1"), "--seeds", 1, 100000);
+  opts.jobs = int(to_long(args.value("-j", std::to_string(default_jobs())), "-j", 1, 256));
+  opts.campaign = args.flag("--campaign");
+  opts.verbose = args.flag("-v");
+  opts.progress = isatty(2);
+  opts.frames_real = default_frames_real();
+  Target target = make_target(args);
+  args.positional();
+
+  bool any = false;
+  for (const auto &k : target.registry().kernels()) any |= glob_match(opts.kernel_glob, k.name);
+  if (!any) throw InputError("no kernel matches '" + opts.kernel_glob + "' (bfbench list)");
+
+  size_t failures = 0, calls = 0;
+  for (long s = 0; s < seeds; ++s) {
+    CheckOptions o = opts;
+    o.seed = opts.seed + uint32_t(s);
+    Checker ck(target, o);
+    for (const Family *f : families()) {
+      bool wanted = false;
+      for (const auto &k : f->kernels) wanted |= ck.wants(k);
+      if (!wanted) continue;
+      ck.reseed(f->name);
+      f->check(ck);
+      ck.flush();
+    }
+    std::printf("seed %u:\n", o.seed);
+    print_check_report(ck, opts.verbose ? 1000 : 3);
+    failures += ck.failures().size();
+    for (const auto &kv : ck.tally())
+      for (const auto &it : kv.second) calls += it.second.calls;
+  }
+  if (failures) {
+    std::printf("%zu failures in %zu calls\n", failures, calls);
+    return 1;
+  }
+  std::printf("all %zu calls bit-exact, guards intact, ABI kept\n", calls);
+  return 0;
+}
+
+std::vector<Size> parse_sizes(Args &args) {
+  std::vector<Size> sizes;
+  for (const auto &s : args.values("--size")) sizes.push_back(parse_size(s));
+  return sizes;
+}
+
+int cmd_bench(Args &args) {
+  if (help_requested(args,
+                     "usage: bfbench bench [-k GLOB] [--size WxH]... [--json FILE] [--csv FILE]\n"
+                     "                     [--asm-only] [-j N] [--firmware ELF]\n\n"
+                     "Simulator cycles per call and per pixel for each kernel's C reference built for\n"
+                     "the Blackfin and for its assembly, the empty-call overhead measured and\n"
+                     "subtracted, the speed-up, and the kernel's stated lower bound. Sizes default to\n"
+                     "160x120, 320x240 and 640x480. Every measured call is also checked.\n"))
+    return 0;
+  BenchOptions opts;
+  opts.kernel_glob = args.value("-k", "*", "--kernel");
+  auto sizes = parse_sizes(args);
+  if (!sizes.empty()) opts.sizes = sizes;
+  std::string json_path = args.value("--json", ""), csv_path = args.value("--csv", "");
+  opts.run_c = !args.flag("--asm-only");
+  opts.jobs = int(to_long(args.value("-j", std::to_string(default_jobs())), "-j", 1, 256));
+  opts.progress = isatty(2);
+  Target target = make_target(args);
+  args.positional();
+  auto rows = run_bench(target, opts);
+  if (rows.empty()) throw InputError("no kernel matches '" + opts.kernel_glob + "' (bfbench list)");
+  std::fputs(bench_table(rows, target.null_call_cycles()).c_str(), stdout);
+  if (!json_path.empty()) {
+    std::string j = bench_json(rows, target.null_call_cycles());
+    write_file_atomic(json_path, j.data(), j.size());
+  }
+  if (!csv_path.empty()) {
+    std::string c = bench_csv(rows);
+    write_file_atomic(csv_path, c.data(), c.size());
+  }
+  for (const auto &r : rows)
+    if (!r.error.empty()) return 1;
+  return 0;
+}
+
+int cmd_run(Args &args) {
+  if (help_requested(args,
+                     "usage: bfbench run KERNEL --in FILE [--in FILE] --out FILE [--impl asm|c|host]\n"
+                     "                  [--param K=V]... [--size WxH] [--firmware ELF]\n\n"
+                     "Runs one kernel on the given frames (binary or ASCII PGM/PPM, or raw UYVY with\n"
+                     "--size) and writes its output; prints the simulator cycles of the call.\n"))
+    return 0;
+  RunRequest req;
+  req.inputs = args.values("--in");
+  req.output = args.value("--out", "");
+  std::string impl = args.value("--impl", "asm");
+  for (const auto &p : args.values("--param")) req.params.set(p);
+  auto sizes = parse_sizes(args);
+  if (sizes.size() > 1) throw Usage("--size given more than once");
+  if (!sizes.empty()) req.raw_width = sizes[0].w, req.raw_height = sizes[0].h;
+  std::string elf = args.value("--firmware", "");
+  auto pos = args.positional();
+  if (pos.size() != 1) throw Usage("run takes one KERNEL (bfbench list)");
+  req.kernel = pos[0];
+  if (req.inputs.empty()) throw Usage("run needs --in FILE");
+  if (req.output.empty()) throw Usage("run needs --out FILE");
+  const KernelInfo &k = Registry::product().get(req.kernel);
+  const Family *f = family_of(req.kernel);
+  if (!f || !f->plan_run) throw InputError("kernel " + req.kernel + " cannot be run on files");
+  if (impl != "host") {
+    if (parse_impl(impl) == BVB_IMPL_ASM && !k.has_asm)
+      throw InputError("kernel " + req.kernel + " has no assembly implementation (use --impl c)");
+  }
+  RunPlan plan = f->plan_run(req);
+  std::vector<std::vector<uint8_t>> bufs;
+  for (const auto &b : plan.call.bufs) bufs.push_back(b.data);
+  if (impl == "host") {
+    HostBuffers hb(bufs);
+    plan.call.host(hb);
+    plan.write(bufs, req.output);
+    std::printf("%s host %s: done\n", req.kernel.c_str(), plan.summary.c_str());
+    return 0;
+  }
+  FirmwareImage fw = product_firmware();
+  if (!elf.empty()) fw.elf = elf;
+  Target target(fw, default_simulator());
+  Call call;
+  call.kernel = k.index;
+  call.impl = parse_impl(impl);
+  call.cycle_limit = plan.call.cycle_limit;
+  call.args = plan.call.args;
+  call.bufs = plan.call.bufs;
+  CallResult r = target.run_one(call);
+  std::string err = describe_failure(call, r);
+  if (!err.empty()) {
+    std::fprintf(stderr, "bfbench: %s (%s): %s\n", req.kernel.c_str(), impl.c_str(), err.c_str());
+    return 1;
+  }
+  plan.write(r.data, req.output);
+  std::printf("%s %s %s: %u cycles", req.kernel.c_str(), impl.c_str(), plan.summary.c_str(), r.cycles);
+  if (plan.call.pixels > 0) std::printf(" (%.2f per pixel)", r.cycles / plan.call.pixels);
+  std::printf("\n");
+  return 0;
+}
+
+int cmd_budgets(Args &args) {
+  if (help_requested(args,
+                     "usage: bfbench budgets [--update] [--file FILE] [-k GLOB] [-j N]\n\n"
+                     "Measures every assembly kernel at the sizes its budgets name (and at 160x120,\n"
+                     "320x240, 640x480 for kernels without one) and compares with the budgets file\n"
+                     "(default ci/budgets.json). Fails when a kernel exceeds its budget, has none, or\n"
+                     "a budget names nothing measured. --update rewrites the file atomically with the\n"
+                     "measured cycles and prints old -> new for every entry.\n"))
+    return 0;
+  const bool update = args.flag("--update");
+  std::string path = args.value("--file", BVB_SOURCE_DIR "/ci/budgets.json");
+  BenchOptions opts;
+  opts.kernel_glob = args.value("-k", "*", "--kernel");
+  opts.jobs = int(to_long(args.value("-j", std::to_string(default_jobs())), "-j", 1, 256));
+  opts.run_c = false;
+  opts.progress = isatty(2);
+  Target target = make_target(args);
+  args.positional();
+  std::vector<Budget> budgets;
+  bool exists = access(path.c_str(), F_OK) == 0;
+  if (exists || !update) budgets = load_budgets(path);
+  for (Size s : budget_sizes(budgets)) {
+    bool have = false;
+    for (Size t : opts.sizes) have |= t.w == s.w && t.h == s.h;
+    if (!have) opts.sizes.push_back(s);
+  }
+  auto rows = run_bench(target, opts);
+  std::vector<Budget> scoped;  // only budgets of kernels under -k are judged or rewritten
+  std::vector<Budget> others;
+  for (const auto &b : budgets)
+    (glob_match(opts.kernel_glob, b.key.substr(0, b.key.find('/'))) ? scoped : others).push_back(b);
+  auto verdicts = judge_budgets(rows, scoped);
+  if (update) {
+    std::vector<Budget> next = others;
+    for (const auto &v : verdicts) {
+      if (v.status == BudgetVerdict::Failed) {
+        std::printf("%-40s FAILED its check, budget kept: %s\n", v.key.c_str(), v.detail.c_str());
+        if (v.budget) next.push_back({v.key, v.budget, 0});
+        continue;
+      }
+      if (v.status == BudgetVerdict::Unmeasured) {
+        std::printf("%-40s %llu -> removed (nothing measures it)\n", v.key.c_str(), (unsigned long long)v.budget);
+        continue;
+      }
+      double tol = 0;
+      for (const auto &b : scoped)
+        if (b.key == v.key) tol = b.tolerance_pct;
+      next.push_back({v.key, v.measured, tol});
+      if (v.status == BudgetVerdict::Missing)
+        std::printf("%-40s new -> %llu\n", v.key.c_str(), (unsigned long long)v.measured);
+      else
+        std::printf("%-40s %llu -> %llu%s\n", v.key.c_str(), (unsigned long long)v.budget,
+                    (unsigned long long)v.measured, v.budget == v.measured ? "" : "  (changed)");
+    }
+    save_budgets(path, next);
+    std::printf("wrote %s\n", path.c_str());
+    for (const auto &v : verdicts)
+      if (v.status == BudgetVerdict::Failed) return 1;
+    return 0;
+  }
+  int bad = 0;
+  for (const auto &v : verdicts) {
+    const char *st = "ok";
+    switch (v.status) {
+      case BudgetVerdict::Ok: break;
+      case BudgetVerdict::Over: st = "OVER BUDGET"; ++bad; break;
+      case BudgetVerdict::Missing: st = "NO BUDGET"; ++bad; break;
+      case BudgetVerdict::Unmeasured: st = "BUDGET FOR NOTHING MEASURED"; ++bad; break;
+      case BudgetVerdict::Failed: st = "FAILED CHECK"; ++bad; break;
+    }
+    std::printf("%-40s budget %12llu  measured %12llu  %s\n", v.key.c_str(), (unsigned long long)v.budget,
+                (unsigned long long)v.measured, st);
+    if (v.status == BudgetVerdict::Failed) std::printf("  %s\n", v.detail.c_str());
+  }
+  std::printf("%zu budgets, %d problems (%s)\n", verdicts.size(), bad, path.c_str());
+  return bad ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  if (argc < 2) {
+    std::fputs(kMainHelp, stderr);
+    return 2;
+  }
+  const std::string cmd = argv[1];
+  try {
+    if (cmd == "--help" || cmd == "-h" || cmd == "help") {
+      std::fputs(kMainHelp, stdout);
+      return 0;
+    }
+    Args args(argc, argv, 2);
+    if (cmd == "list") return cmd_list(args);
+    if (cmd == "check") return cmd_check(args);
+    if (cmd == "bench") return cmd_bench(args);
+    if (cmd == "run") return cmd_run(args);
+    if (cmd == "budgets") return cmd_budgets(args);
+    bool handled = false;
+    int rc = bvb::extra_command(cmd, argc - 1, argv + 1, &handled);
+    if (handled) return rc;
+    throw Usage("unknown command '" + cmd + "' (bfbench --help)");
+  } catch (const Usage &e) {
+    std::fprintf(stderr, "bfbench: %s\n", e.what());
+    return 2;
+  } catch (const InputError &e) {
+    std::fprintf(stderr, "bfbench: %s\n", e.what());
+    return 2;
+  } catch (const sim::SetupError &e) {
+    std::fprintf(stderr, "bfbench: %s\n", e.what());
+    return 2;
+  } catch (const std::exception &e) {
+    std::fprintf(stderr, "bfbench: internal error: %s\n", e.what());
+    return 2;
+  }
+}

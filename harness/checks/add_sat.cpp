@@ -1,0 +1,84 @@
+// Check, bench and run for bvb/add_sat.h.
+#include "bvb/add_sat.h"
+
+#include "family.h"
+#include "io.h"
+#include "patterns.h"
+
+namespace bvb {
+namespace {
+
+CheckCall add_sat_call(int w, int h, int sstride, int dstride, std::vector<uint8_t> a,
+                       std::vector<uint8_t> b, const std::string &case_name) {
+  CheckCall c;
+  c.kernel = "add_sat_u8";
+  c.case_name = case_name;
+  c.pixels = double(w) * h;
+  const View src{1, false, w, h, sstride}, dst{1, false, w, h, dstride};
+  int ia = c.in("a", std::move(a), src);
+  int ib = c.in("b", std::move(b), src);
+  int id = c.out("dst", size_t(dstride) * (h - 1) + w, dst);
+  c.buf(ia).buf(ib).buf(id).word(w).word(h).word(sstride).word(dstride);
+  c.host = [=](HostBuffers &m) { bvb_add_sat_u8_c(m.u8(ia), m.u8(ib), m.u8(id), w, h, sstride, dstride); };
+  return c;
+}
+
+void check(Checker &ck) {
+  if (!ck.wants("add_sat_u8")) return;
+  Rng &rng = ck.rng();
+  static const uint32_t places[] = {BVB_PLACE_SDRAM, BVB_PLACE_L1A, BVB_PLACE_L1B, BVB_PLACE_SCRATCH};
+  for (Size s : check_sizes(1, 1, rng, ck.options().campaign)) {
+    for (Pattern pa : all_patterns()) {
+      const Pattern pb = all_patterns()[rng.uniform(0, int(all_patterns().size()) - 1)];
+      const int ss = pick_stride(s.w, rng), ds = pick_stride(s.w, rng);
+      std::string name = std::to_string(s.w) + "x" + std::to_string(s.h) + " strides " +
+                         std::to_string(ss) + "/" + std::to_string(ds) + " " + pattern_name(pa) + "+" +
+                         pattern_name(pb);
+      CheckCall c = add_sat_call(s.w, s.h, ss, ds, make_plane(pa, s.w, s.h, ss, rng, ck.options().frames_real),
+                                 make_plane(pb, s.w, s.h, ss, rng, ck.options().frames_real), name);
+      // Unaligned rows and every L1 bank, when they fit: the kernel has no alignment contract.
+      const uint32_t place = places[rng.uniform(0, 3)];
+      size_t total = 0;
+      for (auto &b : c.bufs) total += b.data.size() + 2 * b.guard + 8;
+      const size_t room = place == BVB_PLACE_SCRATCH ? 4096u : place == BVB_PLACE_L1B ? 24576u : 32768u;
+      for (auto &b : c.bufs) {
+        b.place = total <= room ? place : BVB_PLACE_SDRAM;
+        b.skew = uint32_t(rng.uniform(0, 3));
+      }
+      ck.add(std::move(c));
+    }
+  }
+}
+
+CheckCall bench_call(const std::string &, int w, int h, Rng &rng) {
+  return add_sat_call(w, h, w, w, make_plane(Pattern::Noise, w, h, w, rng, ""),
+                      make_plane(Pattern::Noise, w, h, w, rng, ""),
+                      std::to_string(w) + "x" + std::to_string(h));
+}
+
+// Two byte loads and a byte store per pixel; one issue does two loads or a load and a store.
+double lower_bound(const std::string &, int w, int h) { return 1.5 * w * h; }
+
+RunPlan plan_run(RunRequest &req) {
+  if (req.inputs.size() != 2) throw InputError("add_sat_u8 takes two --in frames");
+  Image a = read_frame(req.inputs[0], req.raw_width, req.raw_height);
+  Image b = read_frame(req.inputs[1], req.raw_width, req.raw_height);
+  if (a.width != b.width || a.height != b.height) throw InputError("add_sat_u8: the two frames differ in size");
+  req.params.check_all_used();
+  RunPlan p;
+  p.call = add_sat_call(a.width, a.height, a.width, a.width, a.data, b.data, "run");
+  const int w = a.width, h = a.height;
+  p.write = [w, h](std::vector<std::vector<uint8_t>> &bufs, const std::string &path) {
+    Image out(w, h);
+    out.data = bufs[2];
+    write_pnm(path, out);
+  };
+  p.summary = std::to_string(w) + "x" + std::to_string(h);
+  return p;
+}
+
+const Family kAddSat{"add_sat", {"add_sat_u8"}, check, bench_call, lower_bound, plan_run};
+BVB_FAMILY(kAddSat);
+
+}  // namespace
+}  // namespace bvb

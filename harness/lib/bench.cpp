@@ -1,0 +1,219 @@
+#include "bench.h"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "family.h"
+#include "io.h"
+#include "json.h"
+
+namespace bvb {
+
+std::vector<BenchRow> run_bench(const Target &target, const BenchOptions &opts) {
+  CheckOptions co;
+  co.seed = opts.seed;
+  co.jobs = opts.jobs;
+  co.progress = opts.progress;
+  co.run_c = opts.run_c;
+  Checker ck(target, co);
+  std::vector<BenchRow> rows;
+  std::vector<CheckCall> calls;
+  for (const Family *f : families()) {
+    if (!f->bench_call) continue;
+    for (const auto &k : f->kernels) {
+      const KernelInfo *ki = target.registry().find(k);
+      if (!ki || !glob_match(opts.kernel_glob, k)) continue;
+      for (Size s : opts.sizes) {
+        Rng rng(opts.seed ^ (uint64_t(s.w) << 20) ^ uint64_t(s.h));
+        CheckCall c = f->bench_call(k, s.w, s.h, rng);
+        if (c.kernel.empty()) continue;
+        BenchRow r;
+        r.kernel = k;
+        r.case_name = c.case_name;
+        r.pixels = c.pixels;
+        r.lower_bound = f->lower_bound ? f->lower_bound(k, s.w, s.h) : 0;
+        rows.push_back(r);
+        calls.push_back(std::move(c));
+      }
+    }
+  }
+  // The bench checks what it measures: a wrong answer is not a fast one.
+  for (size_t i = 0; i < calls.size(); ++i) {
+    BenchRow *row = &rows[i];
+    ck.add(std::move(calls[i]), [row](uint32_t impl, const CallResult &r) {
+      if (impl == BVB_IMPL_C) row->has_c = true, row->c_cycles = r.cycles;
+      else row->has_asm = true, row->asm_cycles = r.cycles;
+    });
+  }
+  ck.flush();
+  for (const auto &f : ck.failures())
+    for (auto &r : rows)
+      if (r.kernel == f.kernel && r.case_name == f.case_name && r.error.empty())
+        r.error = f.impl + ": " + failure_kind_name(f.kind) + ": " + f.message;
+  return rows;
+}
+
+namespace {
+std::string fmt(const char *f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+std::string group(uint64_t v) {
+  std::string s = std::to_string(v), o;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (i && (s.size() - i) % 3 == 0) o += ',';
+    o += s[i];
+  }
+  return o;
+}
+}  // namespace
+
+std::string bench_table(const std::vector<BenchRow> &rows, uint32_t null_call) {
+  std::ostringstream o;
+  char line[512];
+  std::snprintf(line, sizeof line, "%-22s %-10s %14s %9s %14s %9s %8s %9s %8s\n", "kernel", "case",
+                "C cycles", "C c/px", "asm cycles", "asm c/px", "speed-up", "bound c/px", "asm/bound");
+  o << line;
+  for (const auto &r : rows) {
+    const double px = r.pixels > 0 ? r.pixels : 1;
+    std::string c = r.has_c ? group(r.c_cycles) : "-", cpp = r.has_c ? fmt("%.2f", r.c_cycles / px) : "-";
+    std::string a = r.has_asm ? group(r.asm_cycles) : "-", app = r.has_asm ? fmt("%.2f", r.asm_cycles / px) : "-";
+    std::string sp = r.has_c && r.has_asm && r.asm_cycles ? fmt("%.1fx", double(r.c_cycles) / r.asm_cycles) : "-";
+    std::string lb = r.lower_bound > 0 ? fmt("%.2f", r.lower_bound / px) : "-";
+    std::string eff = r.lower_bound > 0 && r.has_asm ? fmt("%.2f", r.asm_cycles / r.lower_bound) : "-";
+    std::snprintf(line, sizeof line, "%-22s %-10s %14s %9s %14s %9s %8s %9s %8s\n", r.kernel.c_str(),
+                  r.case_name.c_str(), c.c_str(), cpp.c_str(), a.c_str(), app.c_str(), sp.c_str(),
+                  lb.c_str(), eff.c_str());
+    o << line;
+    if (!r.error.empty()) o << "  FAILED: " << r.error << "\n";
+  }
+  o << "cycles are simulator cycles per call with the empty-call overhead (" << null_call
+    << " cycles) subtracted\n";
+  return o.str();
+}
+
+std::string bench_json(const std::vector<BenchRow> &rows, uint32_t null_call) {
+  std::ostringstream o;
+  o << "{\n  \"null_call_cycles\": " << null_call << ",\n  \"rows\": [";
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const auto &r = rows[i];
+    o << (i ? ",\n" : "\n") << "    {\"kernel\": " << json::quote(r.kernel)
+      << ", \"case\": " << json::quote(r.case_name) << ", \"pixels\": " << r.pixels;
+    if (r.has_c) o << ", \"c_cycles\": " << r.c_cycles;
+    if (r.has_asm) o << ", \"asm_cycles\": " << r.asm_cycles;
+    if (r.lower_bound > 0) o << ", \"lower_bound\": " << r.lower_bound;
+    if (!r.error.empty()) o << ", \"error\": " << json::quote(r.error);
+    o << "}";
+  }
+  o << "\n  ]\n}\n";
+  return o.str();
+}
+
+std::string bench_csv(const std::vector<BenchRow> &rows) {
+  std::ostringstream o;
+  o << "kernel,case,pixels,c_cycles,asm_cycles,lower_bound,error\n";
+  for (const auto &r : rows) {
+    o << r.kernel << "," << r.case_name << "," << r.pixels << ",";
+    if (r.has_c) o << r.c_cycles;
+    o << ",";
+    if (r.has_asm) o << r.asm_cycles;
+    o << "," << (r.lower_bound > 0 ? std::to_string(r.lower_bound) : "") << ","
+      << (r.error.empty() ? "" : "\"failed\"") << "\n";
+  }
+  return o.str();
+}
+
+std::vector<Budget> load_budgets(const std::string &path) {
+  auto bytes = read_file(path);
+  json::Value v = json::parse(std::string(bytes.begin(), bytes.end()), path);
+  const json::Value *b = v.type == json::Value::Object ? v.get("budgets") : nullptr;
+  if (!b || b->type != json::Value::Object) throw InputError(path + ": no \"budgets\" object");
+  std::vector<Budget> out;
+  for (const auto &kv : b->obj) {
+    const json::Value *c = kv.second.get("cycles");
+    if (!c || c->type != json::Value::Number || c->num < 0 || c->num > 1e15)
+      throw InputError(path + ": budget " + kv.first + " has no valid \"cycles\"");
+    Budget bd{kv.first, uint64_t(c->num), 0};
+    if (const json::Value *t = kv.second.get("tolerance_pct")) {
+      if (t->type != json::Value::Number || t->num < 0 || t->num > 100)
+        throw InputError(path + ": budget " + kv.first + " has a bad \"tolerance_pct\"");
+      bd.tolerance_pct = t->num;
+    }
+    if (std::count(kv.first.begin(), kv.first.end(), '/') != 2)
+      throw InputError(path + ": budget key '" + kv.first + "' is not kernel/impl/case");
+    out.push_back(bd);
+  }
+  return out;
+}
+
+void save_budgets(const std::string &path, const std::vector<Budget> &budgets) {
+  std::vector<Budget> sorted = budgets;
+  std::sort(sorted.begin(), sorted.end(), [](const Budget &a, const Budget &b) { return a.key < b.key; });
+  std::ostringstream o;
+  o << "{\n  \"chip\": \"bf537\",\n  \"units\": \"simulator cycles per call, empty-call overhead "
+       "subtracted\",\n  \"budgets\": {";
+  for (size_t i = 0; i < sorted.size(); ++i) {
+    o << (i ? ",\n" : "\n") << "    " << json::quote(sorted[i].key) << ": {\"cycles\": " << sorted[i].cycles;
+    if (sorted[i].tolerance_pct > 0) o << ", \"tolerance_pct\": " << sorted[i].tolerance_pct;
+    o << "}";
+  }
+  o << "\n  }\n}\n";
+  std::string s = o.str();
+  write_file_atomic(path, s.data(), s.size());
+}
+
+std::vector<BudgetVerdict> judge_budgets(const std::vector<BenchRow> &rows,
+                                         const std::vector<Budget> &budgets) {
+  std::map<std::string, const Budget *> by_key;
+  for (const auto &b : budgets) by_key[b.key] = &b;
+  std::set<std::string> measured;
+  std::vector<BudgetVerdict> out;
+  for (const auto &r : rows) {
+    if (!r.has_asm) continue;
+    BudgetVerdict v;
+    v.key = r.key("asm");
+    v.measured = r.asm_cycles;
+    measured.insert(v.key);
+    auto it = by_key.find(v.key);
+    if (!r.error.empty()) {
+      v.status = BudgetVerdict::Failed;
+      v.detail = r.error;
+      if (it != by_key.end()) v.budget = it->second->cycles;
+    } else if (it == by_key.end()) {
+      v.status = BudgetVerdict::Missing;
+    } else {
+      v.budget = it->second->cycles;
+      const double allowed = double(v.budget) * (1 + it->second->tolerance_pct / 100);
+      v.status = double(v.measured) > allowed ? BudgetVerdict::Over : BudgetVerdict::Ok;
+    }
+    out.push_back(v);
+  }
+  for (const auto &b : budgets)
+    if (!measured.count(b.key)) {
+      BudgetVerdict v;
+      v.key = b.key;
+      v.budget = b.cycles;
+      v.status = BudgetVerdict::Unmeasured;
+      out.push_back(v);
+    }
+  return out;
+}
+
+std::vector<Size> budget_sizes(const std::vector<Budget> &budgets) {
+  std::set<std::pair<int, int>> seen;
+  std::vector<Size> out;
+  for (const auto &b : budgets) {
+    auto slash = b.key.rfind('/');
+    int w = 0, h = 0;
+    if (std::sscanf(b.key.c_str() + slash + 1, "%dx%d", &w, &h) == 2 && seen.insert({w, h}).second)
+      out.push_back({w, h});
+  }
+  return out;
+}
+
+}  // namespace bvb

@@ -1,0 +1,62 @@
+// Benchmarks (simulator cycles per call, the empty call's overhead already subtracted by the
+// firmware) and the cycle budgets in ci/budgets.json that gate merges.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "check.h"
+#include "patterns.h"
+
+namespace bvb {
+
+struct BenchRow {
+  std::string kernel;
+  std::string case_name;  // e.g. "160x120"
+  double pixels = 0;
+  bool has_c = false, has_asm = false;
+  uint32_t c_cycles = 0, asm_cycles = 0;
+  double lower_bound = 0;  // cycles; 0 when the kernel states none
+  std::string error;       // the kernel failed its check during the bench
+  std::string key(const char *impl) const { return kernel + "/" + impl + "/" + case_name; }
+};
+
+struct BenchOptions {
+  std::string kernel_glob = "*";
+  std::vector<Size> sizes = {{160, 120}, {320, 240}, {640, 480}};
+  bool run_c = true;
+  int jobs = 1;
+  uint32_t seed = 1;
+  bool progress = false;
+};
+
+std::vector<BenchRow> run_bench(const Target &target, const BenchOptions &opts);
+std::string bench_table(const std::vector<BenchRow> &rows, uint32_t null_call_cycles);
+std::string bench_json(const std::vector<BenchRow> &rows, uint32_t null_call_cycles);
+std::string bench_csv(const std::vector<BenchRow> &rows);
+
+struct Budget {
+  std::string key;  // kernel/impl/case
+  uint64_t cycles = 0;
+  double tolerance_pct = 0;  // allowed excess; 0 = exact
+};
+
+std::vector<Budget> load_budgets(const std::string &path);
+void save_budgets(const std::string &path, const std::vector<Budget> &budgets);
+
+struct BudgetVerdict {
+  std::string key;
+  uint64_t budget = 0;  // 0 when there is none
+  uint64_t measured = 0;
+  enum { Ok, Over, Missing, Unmeasured, Failed } status = Ok;
+  std::string detail;
+};
+// Every assembly row needs a budget and must not exceed it; a budget no row measured is
+// reported (a kernel removed or renamed) and fails too.
+std::vector<BudgetVerdict> judge_budgets(const std::vector<BenchRow> &rows,
+                                         const std::vector<Budget> &budgets);
+// The sizes the budgets name, so the gate measures exactly those.
+std::vector<Size> budget_sizes(const std::vector<Budget> &budgets);
+
+}  // namespace bvb

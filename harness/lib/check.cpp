@@ -1,0 +1,237 @@
+#include "check.h"
+
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+
+namespace bvb {
+
+namespace {
+
+Buffer make_buffer(std::string name, Role role, std::vector<uint8_t> bytes, View v) {
+  Buffer b;
+  b.name = std::move(name);
+  b.role = role;
+  b.data = std::move(bytes);
+  b.view = v;
+  return b;
+}
+
+int64_t element(const std::vector<uint8_t> &d, size_t index, const View &v) {
+  const uint8_t *p = d.data() + index * size_t(v.elem);
+  switch (v.elem) {
+    case 1: return v.is_signed ? int64_t(int8_t(p[0])) : int64_t(p[0]);
+    case 2: {
+      uint16_t x;
+      std::memcpy(&x, p, 2);
+      return v.is_signed ? int64_t(int16_t(x)) : int64_t(x);
+    }
+    default: {
+      uint32_t x;
+      std::memcpy(&x, p, 4);
+      return v.is_signed ? int64_t(int32_t(x)) : int64_t(x);
+    }
+  }
+}
+
+uint32_t fnv(const std::string &s) {
+  uint32_t h = 2166136261u;
+  for (char c : s) h = (h ^ uint8_t(c)) * 16777619u;
+  return h;
+}
+
+}  // namespace
+
+const char *failure_kind_name(Failure::Kind k) {
+  switch (k) {
+    case Failure::Mismatch: return "mismatch";
+    case Failure::InputModified: return "input modified";
+    case Failure::Guard: return "write outside buffer";
+    case Failure::Abi: return "ABI violation";
+    case Failure::Fault: return "fault";
+    case Failure::Hang: return "hang";
+    case Failure::Crash: return "simulator crash";
+    default: return "failure";
+  }
+}
+
+int CheckCall::in(std::string name, std::vector<uint8_t> bytes, View v) {
+  bufs.push_back(make_buffer(std::move(name), Role::In, std::move(bytes), v));
+  return int(bufs.size()) - 1;
+}
+
+int CheckCall::out(std::string name, size_t bytes, View v) {
+  std::vector<uint8_t> d(bytes);
+  for (size_t i = 0; i < bytes; ++i) d[i] = poison_byte(i);
+  bufs.push_back(make_buffer(std::move(name), Role::Out, std::move(d), v));
+  return int(bufs.size()) - 1;
+}
+
+int CheckCall::inout(std::string name, std::vector<uint8_t> bytes, View v) {
+  bufs.push_back(make_buffer(std::move(name), Role::InOut, std::move(bytes), v));
+  return int(bufs.size()) - 1;
+}
+
+int CheckCall::scratch(std::string name, size_t bytes) {
+  std::vector<uint8_t> d(bytes);
+  for (size_t i = 0; i < bytes; ++i) d[i] = poison_byte(i);
+  bufs.push_back(make_buffer(std::move(name), Role::Scratch, std::move(d), {}));
+  return int(bufs.size()) - 1;
+}
+
+std::string first_difference(const std::vector<uint8_t> &expected, const std::vector<uint8_t> &actual,
+                             const View &view) {
+  View v = view;
+  if (v.elem != 1 && v.elem != 2 && v.elem != 4) v.elem = 1;
+  const size_t n = std::min(expected.size(), actual.size()) / size_t(v.elem);
+  if (expected.size() != actual.size()) return "sizes differ";
+  size_t first = n;
+  for (size_t i = 0; i < n; ++i)
+    if (element(expected, i, v) != element(actual, i, v)) {
+      first = i;
+      break;
+    }
+  if (first == n) {
+    if (std::memcmp(expected.data(), actual.data(), expected.size()) == 0) return "";
+    return "trailing bytes differ";
+  }
+  size_t ndiff = 0;
+  for (size_t i = first; i < n; ++i) ndiff += element(expected, i, v) != element(actual, i, v);
+  const int stride = v.width > 0 ? (v.stride > 0 ? v.stride : v.width) : 0;
+  std::ostringstream s;
+  if (stride > 0) {
+    const int x = int(first % size_t(stride)), y = int(first / size_t(stride));
+    s << "element (" << x << ", " << y << ")";
+    if (x >= v.width) s << " (in the row padding)";
+    s << ": expected " << element(expected, first, v) << ", got " << element(actual, first, v)
+      << "; " << ndiff << " elements differ\n";
+    // The 5x5 neighbourhood, expected | actual.
+    for (int dy = -2; dy <= 2; ++dy) {
+      const int yy = y + dy;
+      if (yy < 0 || size_t(yy) * stride >= n) continue;
+      std::string le, la;
+      for (int dx = -2; dx <= 2; ++dx) {
+        const int xx = x + dx;
+        char b1[16], b2[16];
+        if (xx < 0 || xx >= stride || size_t(yy) * stride + xx >= n) {
+          std::snprintf(b1, sizeof b1, "%7s", ".");
+          std::snprintf(b2, sizeof b2, "%7s", ".");
+        } else {
+          size_t k = size_t(yy) * stride + xx;
+          std::snprintf(b1, sizeof b1, "%7lld", (long long)element(expected, k, v));
+          std::snprintf(b2, sizeof b2, "%6lld%c", (long long)element(actual, k, v),
+                        element(expected, k, v) != element(actual, k, v) ? '*' : ' ');
+        }
+        le += b1;
+        la += b2;
+      }
+      s << "      y=" << yy << (dy == 0 ? ">" : " ") << le << "   |" << la << "\n";
+    }
+  } else {
+    s << "element " << first << ": expected " << element(expected, first, v) << ", got "
+      << element(actual, first, v) << "; " << ndiff << " elements differ\n";
+  }
+  return s.str();
+}
+
+Checker::Checker(const Target &target, CheckOptions opts)
+    : target_(target), opts_(std::move(opts)), rng_(opts_.seed) {}
+
+void Checker::reseed(const std::string &family) { rng_ = Rng((uint64_t(opts_.seed) << 32) ^ fnv(family)); }
+
+bool Checker::wants(const std::string &kernel) const {
+  return glob_match(opts_.kernel_glob, kernel) && target_.registry().find(kernel) != nullptr;
+}
+
+void Checker::add(CheckCall call, Observer observer) {
+  pending_.push_back({std::move(call), std::move(observer)});
+}
+
+void Checker::judge(const CheckCall &cc, uint32_t impl, const Call &call, const CallResult &r,
+                    const std::vector<std::vector<uint8_t>> &expected) {
+  auto &t = tally_[cc.kernel][impl_name(impl)];
+  ++t.calls;
+  auto fail = [&](Failure::Kind kind, const std::string &msg) {
+    failures_.push_back({cc.kernel, impl_name(impl), cc.case_name, opts_.seed, kind, msg});
+  };
+  const size_t before = failures_.size();
+  if (!r.crash.empty()) {
+    fail(Failure::Crash, describe_failure(call, r));
+  } else if (r.status == BVB_FAULT) {
+    fail(Failure::Fault, describe_failure(call, r));
+  } else if (r.status == BVB_HANG) {
+    fail(Failure::Hang, describe_failure(call, r));
+  } else if (r.status != BVB_OK) {
+    fail(Failure::Other, describe_failure(call, r));
+  } else {
+    if (r.abi_bad) fail(Failure::Abi, "did not preserve " + abi_names(r.abi_bad));
+    for (const auto &g : r.guard_damage)
+      fail(Failure::Guard, std::string("overwrite ") + (g.before ? "before" : "after") + " buffer '" +
+                               call.bufs[g.buffer].name + "' at byte offset " + std::to_string(g.offset));
+    for (size_t b = 0; b < call.bufs.size(); ++b) {
+      const Buffer &buf = call.bufs[b];
+      if (buf.role == Role::Scratch) continue;
+      std::string d = first_difference(expected[b], r.data[b], buf.view);
+      if (d.empty()) continue;
+      if (buf.role == Role::In)
+        fail(Failure::InputModified, "input buffer '" + buf.name + "' was written: " + d);
+      else
+        fail(Failure::Mismatch, "buffer '" + buf.name + "' " + d);
+    }
+  }
+  if (failures_.size() > before) ++t.failed;
+}
+
+size_t Checker::flush() {
+  if (pending_.empty()) return 0;
+  const size_t before = failures_.size();
+  std::vector<Call> calls;
+  struct Slot {
+    size_t pending;
+    uint32_t impl;
+  };
+  std::vector<Slot> slots;
+  for (size_t p = 0; p < pending_.size(); ++p) {
+    const CheckCall &cc = pending_[p].call;
+    const KernelInfo &k = target_.registry().get(cc.kernel);
+    for (uint32_t impl : {uint32_t(BVB_IMPL_C), uint32_t(BVB_IMPL_ASM)}) {
+      if (impl == BVB_IMPL_ASM && !k.has_asm) continue;
+      if (impl == BVB_IMPL_C && !opts_.run_c && k.has_asm) continue;
+      Call c;
+      c.kernel = k.index;
+      c.impl = impl;
+      c.cycle_limit = cc.cycle_limit;
+      c.args = cc.args;
+      c.bufs = cc.bufs;
+      calls.push_back(std::move(c));
+      slots.push_back({p, impl});
+    }
+  }
+  std::function<void(size_t, size_t)> progress;
+  if (opts_.progress)
+    progress = [](size_t done, size_t total) {
+      std::fprintf(stderr, "\r  %zu/%zu calls", done, total);
+      if (done == total) std::fprintf(stderr, "\r%*s\r", 30, "");
+    };
+  std::vector<CallResult> results = target_.run(calls, opts_.jobs, progress);
+
+  // Host reference per pending call, then judge each implementation against it.
+  size_t s = 0;
+  for (size_t p = 0; p < pending_.size(); ++p) {
+    const CheckCall &cc = pending_[p].call;
+    std::vector<std::vector<uint8_t>> expected;
+    for (const auto &b : cc.bufs) expected.push_back(b.data);
+    if (cc.host) {
+      HostBuffers hb(expected);
+      cc.host(hb);
+    }
+    for (; s < slots.size() && slots[s].pending == p; ++s) {
+      judge(cc, slots[s].impl, calls[s], results[s], expected);
+      if (pending_[p].observer) pending_[p].observer(slots[s].impl, results[s]);
+    }
+  }
+  pending_.clear();
+  return failures_.size() - before;
+}
+
+}  // namespace bvb

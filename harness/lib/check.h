@@ -1,0 +1,142 @@
+// The check framework: a checkasm for the Blackfin. A kernel family describes calls (buffers,
+// arguments, and the host C reference to run on the same buffers); the Checker runs each call
+// on the firmware's C and assembly implementations in the simulator, runs the host reference,
+// and compares every buffer bit for bit: outputs against the host's, inputs against their
+// original contents, guard bands against their pattern, callee-saved registers against their
+// canaries. Failures say what differs, where, and how to replay it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "target.h"
+
+namespace bvb {
+
+// splitmix64: small, fast, and the same sequence on every platform.
+class Rng {
+ public:
+  explicit Rng(uint64_t seed) : s_(seed) {}
+  uint64_t next() {
+    uint64_t z = (s_ += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  uint32_t u32() { return uint32_t(next() >> 32); }
+  int uniform(int lo, int hi) { return lo + int(next() % uint64_t(hi - lo + 1)); }  // [lo, hi]
+
+ private:
+  uint64_t s_;
+};
+
+// The host reference's view of a call's buffers (the same bytes the firmware gets).
+class HostBuffers {
+ public:
+  explicit HostBuffers(std::vector<std::vector<uint8_t>> &d) : d_(d) {}
+  uint8_t *u8(int i) { return d_[i].data(); }
+  int8_t *s8(int i) { return reinterpret_cast<int8_t *>(d_[i].data()); }
+  uint16_t *u16(int i) { return reinterpret_cast<uint16_t *>(d_[i].data()); }
+  int16_t *s16(int i) { return reinterpret_cast<int16_t *>(d_[i].data()); }
+  int32_t *s32(int i) { return reinterpret_cast<int32_t *>(d_[i].data()); }
+  uint32_t *u32(int i) { return reinterpret_cast<uint32_t *>(d_[i].data()); }
+  template <class T> T *as(int i) { return reinterpret_cast<T *>(d_[i].data()); }
+
+ private:
+  std::vector<std::vector<uint8_t>> &d_;
+};
+
+struct CheckCall {
+  std::string kernel;
+  std::string case_name;  // e.g. "13x5 stride 16 ramp"; with the seed, enough to replay
+  std::vector<Buffer> bufs;
+  std::vector<Arg> args;
+  std::function<void(HostBuffers &)> host;  // runs the host C reference on the buffers
+  uint32_t cycle_limit = 0;
+  double pixels = 0;  // for cycles per pixel
+
+  // Builders: return the buffer's index for Arg::buf().
+  int in(std::string name, std::vector<uint8_t> bytes, View v = {});
+  int out(std::string name, size_t bytes, View v = {});  // filled with a poison pattern
+  int inout(std::string name, std::vector<uint8_t> bytes, View v = {});
+  int scratch(std::string name, size_t bytes);
+  CheckCall &arg(Arg a) { args.push_back(a); return *this; }
+  CheckCall &buf(int i) { return arg(Arg::buf(uint32_t(i))); }
+  CheckCall &word(int64_t v) { return arg(Arg::word(v)); }
+};
+
+struct Failure {
+  enum Kind { Mismatch, InputModified, Guard, Abi, Fault, Hang, Crash, Other };
+  std::string kernel;
+  std::string impl;
+  std::string case_name;
+  uint32_t seed = 0;
+  Kind kind = Other;
+  std::string message;
+};
+const char *failure_kind_name(Failure::Kind k);
+
+struct CheckOptions {
+  uint32_t seed = 0;
+  std::string kernel_glob = "*";
+  int jobs = 1;
+  bool campaign = false;   // larger sizes and more cases
+  bool verbose = false;
+  bool progress = false;   // a progress line on stderr
+  bool run_c = true;       // also run the C reference on the Blackfin (else assembly only)
+  std::string frames_real; // ../shared/frames-real, for crops of real frames
+};
+
+class Checker {
+ public:
+  using Observer = std::function<void(uint32_t impl, const CallResult &)>;
+
+  Checker(const Target &target, CheckOptions opts);
+
+  const CheckOptions &options() const { return opts_; }
+  const Target &target() const { return target_; }
+  uint32_t seed() const { return opts_.seed; }
+  Rng &rng() { return rng_; }
+  void reseed(const std::string &family);  // each family's inputs depend only on seed and name
+
+  // Is this kernel selected by -k and present in the firmware?
+  bool wants(const std::string &kernel) const;
+
+  // Queues the call on every implementation the firmware has (plus the host reference).
+  void add(CheckCall call, Observer observer = {});
+  // Runs everything queued; records failures. Returns the number of new failures.
+  size_t flush();
+
+  const std::vector<Failure> &failures() const { return failures_; }
+  // Per kernel and implementation: calls checked and calls that failed.
+  struct Tally { size_t calls = 0, failed = 0; };
+  const std::map<std::string, std::map<std::string, Tally>> &tally() const { return tally_; }
+
+ private:
+  void judge(const CheckCall &cc, uint32_t impl, const Call &call, const CallResult &r,
+             const std::vector<std::vector<uint8_t>> &expected);
+
+  const Target &target_;
+  CheckOptions opts_;
+  Rng rng_;
+  struct Pending {
+    CheckCall call;
+    Observer observer;
+  };
+  std::vector<Pending> pending_;
+  std::vector<Failure> failures_;
+  std::map<std::string, std::map<std::string, Tally>> tally_;
+};
+
+// The byte that output buffers start as: a kernel that skips a pixel leaves it showing.
+inline uint8_t poison_byte(size_t i) { return uint8_t(0xC3 + i * 0x29); }
+
+// Renders the first difference between two buffers under a view, with its neighbourhood.
+// Returns "" when they are equal.
+std::string first_difference(const std::vector<uint8_t> &expected, const std::vector<uint8_t> &actual,
+                             const View &v);
+
+}  // namespace bvb

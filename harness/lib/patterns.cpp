@@ -1,0 +1,130 @@
+#include "patterns.h"
+
+#include <cstdlib>
+#include <sys/stat.h>
+
+#include "io.h"
+
+namespace bvb {
+
+const std::vector<Pattern> &all_patterns() {
+  static const std::vector<Pattern> p = {Pattern::Zero,    Pattern::Max,   Pattern::Checker,
+                                         Pattern::RampX,   Pattern::RampY, Pattern::Impulse,
+                                         Pattern::Edges,   Pattern::Noise, Pattern::Runs,
+                                         Pattern::Real};
+  return p;
+}
+
+const char *pattern_name(Pattern p) {
+  switch (p) {
+    case Pattern::Zero: return "zero";
+    case Pattern::Max: return "max";
+    case Pattern::Checker: return "checker";
+    case Pattern::RampX: return "ramp-x";
+    case Pattern::RampY: return "ramp-y";
+    case Pattern::Impulse: return "impulse";
+    case Pattern::Edges: return "edges";
+    case Pattern::Noise: return "noise";
+    case Pattern::Runs: return "runs";
+    case Pattern::Real: return "real";
+  }
+  return "?";
+}
+
+std::string default_frames_real() {
+  const char *e = std::getenv("BFBENCH_FRAMES_REAL");
+  return e && *e ? e : BVB_FRAMES_REAL;
+}
+
+Image real_crop(const std::string &dir, int w, int h, Rng &rng) {
+  static const char *frames[] = {"RubberWhale/frame10.pgm", "Hydrangea/frame10.pgm",
+                                 "Dimetrodon/frame10.pgm",  "Grove2/frame10.pgm",
+                                 "Urban2/frame10.pgm",      "Yosemite/yos9.pgm",
+                                 "Rubic/rubic.0.pgm"};
+  const std::string path = dir + "/" + frames[rng.uniform(0, 6)];
+  struct stat st;
+  if (dir.empty() || stat(path.c_str(), &st) != 0) return {};
+  static std::string cached_path;
+  static Image cached;
+  if (cached_path != path) {
+    cached = read_pnm(path);
+    cached_path = path;
+  }
+  const Image &src = cached;
+  Image out(w, h);
+  // Tile when the crop is larger than the frame (only for sizes above 640x480).
+  const int x0 = src.width > w ? rng.uniform(0, src.width - w) : 0;
+  const int y0 = src.height > h ? rng.uniform(0, src.height - h) : 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) out.at(x, y) = src.at((x0 + x) % src.width, (y0 + y) % src.height);
+  return out;
+}
+
+std::vector<uint8_t> make_plane(Pattern p, int w, int h, int stride, Rng &rng,
+                                const std::string &frames_real) {
+  std::vector<uint8_t> d(size_t(stride) * (h - 1) + w);
+  for (auto &v : d) v = uint8_t(rng.u32());  // padding and, for Noise, everything
+  Image real;
+  if (p == Pattern::Real) {
+    real = real_crop(frames_real, w, h, rng);
+    if (real.data.empty()) p = Pattern::Runs;  // frames not available: keep the case meaningful
+  }
+  const int ix = rng.uniform(0, w - 1), iy = rng.uniform(0, h - 1);
+  const int ex = rng.uniform(0, w), ey = rng.uniform(0, h);
+  int run_left = 0, run_kind = 0;
+  uint8_t run_value = 0;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      uint8_t &v = d[size_t(y) * stride + x];
+      switch (p) {
+        case Pattern::Zero: v = 0; break;
+        case Pattern::Max: v = 255; break;
+        case Pattern::Checker: v = ((x ^ y) & 1) ? 255 : 0; break;
+        case Pattern::RampX: v = uint8_t(w > 1 ? x * 255 / (w - 1) : 128); break;
+        case Pattern::RampY: v = uint8_t(h > 1 ? y * 255 / (h - 1) : 128); break;
+        case Pattern::Impulse: v = (x == ix && y == iy) ? 255 : 0; break;
+        // A saturating step edge at a random place, horizontal and vertical.
+        case Pattern::Edges: v = (x >= ex) != (y >= ey) ? 255 : 0; break;
+        case Pattern::Noise: break;
+        case Pattern::Runs:
+          // Random-length runs of 0, 255, random and alternating values, as checkasm does.
+          if (run_left == 0) {
+            run_left = rng.uniform(1, 24);
+            run_kind = rng.uniform(0, 3);
+            run_value = uint8_t(rng.u32());
+          }
+          --run_left;
+          v = run_kind == 0 ? 0 : run_kind == 1 ? 255 : run_kind == 2 ? uint8_t(rng.u32())
+                                                                      : ((x + y) & 1 ? run_value : uint8_t(~run_value));
+          break;
+        case Pattern::Real: v = real.at(x, y); break;
+      }
+    }
+  }
+  return d;
+}
+
+std::vector<Size> check_sizes(int min_w, int min_h, Rng &rng, bool campaign) {
+  std::vector<Size> s = {{min_w, min_h}, {min_w + 1, min_h}, {min_w, min_h + 1},
+                         {std::max(min_w, 7), std::max(min_h, 5)},
+                         {std::max(min_w, 16), std::max(min_h, 9)},
+                         {std::max(min_w, 33), std::max(min_h, 17)},
+                         {160, 120}};
+  const int nrandom = campaign ? 12 : 3;
+  for (int i = 0; i < nrandom; ++i)
+    s.push_back({rng.uniform(min_w, campaign ? 400 : 96), rng.uniform(min_h, campaign ? 300 : 64)});
+  if (campaign) {
+    s.push_back({320, 240});
+    s.push_back({640, 480});
+    s.push_back({639, 479});
+  }
+  return s;
+}
+
+int pick_stride(int w, Rng &rng, int multiple) {
+  int s = w;
+  if (rng.uniform(0, 2) == 0) s += rng.uniform(1, 9);
+  return (s + multiple - 1) / multiple * multiple;
+}
+
+}  // namespace bvb

@@ -1,0 +1,40 @@
+// The host's view of a firmware image's kernel registry, expanded from the same list file the
+// firmware is built from (firmware/kernels.def, or firmware/selftest/selftest.def).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bvb/mailbox.h"
+
+namespace bvb {
+
+struct KernelInfo {
+  std::string name;
+  uint32_t index;
+  bool has_asm;
+};
+
+class Registry {
+ public:
+  explicit Registry(std::vector<KernelInfo> kernels) : kernels_(std::move(kernels)) {}
+  static const Registry &product();
+  static const Registry &selftest();
+
+  const std::vector<KernelInfo> &kernels() const { return kernels_; }
+  const KernelInfo *find(const std::string &name) const;
+  const KernelInfo &get(const std::string &name) const;  // throws InputError if unknown
+  uint32_t hash() const;  // as the firmware computes it (FNV-1a of names with their NULs)
+
+ private:
+  std::vector<KernelInfo> kernels_;
+};
+
+const char *impl_name(uint32_t impl);  // "c", "asm"
+uint32_t parse_impl(const std::string &s);  // throws InputError
+
+// Shell-style glob with * and ?, for -k filters.
+bool glob_match(const std::string &pattern, const std::string &text);
+
+}  // namespace bvb

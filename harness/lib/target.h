@@ -1,0 +1,113 @@
+// Calls kernels in a firmware image running in the simulator, through the memory-mapped window
+// (bvb/mailbox.h): packs calls into windows, runs them, reads results and buffers back. A call
+// that kills the simulator is blamed on that call and the run resumes after it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "bvb/mailbox.h"
+#include "registry.h"
+
+namespace bvb {
+
+// How a buffer's bytes are read when a report shows them: element size and 2-D shape.
+struct View {
+  int elem = 1;          // bytes per element: 1, 2 or 4
+  bool is_signed = false;
+  int width = 0;         // elements per row (0: a flat array of size/elem elements)
+  int height = 1;
+  int stride = 0;        // elements between rows
+};
+
+enum class Role { In, Out, InOut, Scratch };
+
+struct Buffer {
+  std::string name;
+  Role role = Role::In;
+  std::vector<uint8_t> data;
+  View view;
+  uint32_t place = BVB_PLACE_SDRAM;
+  uint32_t guard = 64;
+  uint32_t align = 4;
+  uint32_t skew = 0;
+};
+
+struct Arg {
+  bool is_buffer = false;
+  uint32_t value = 0;  // the word itself, or a buffer index
+  static Arg buf(uint32_t index) { return {true, index}; }
+  static Arg word(int64_t v) { return {false, uint32_t(v)}; }
+};
+
+struct Call {
+  uint32_t kernel = 0;
+  uint32_t impl = BVB_IMPL_C;
+  uint32_t cycle_limit = 0;  // 0: Target's default
+  std::vector<Arg> args;
+  std::vector<Buffer> bufs;
+};
+
+struct GuardDamage {
+  int buffer;
+  bool before;     // leading guard band (else trailing)
+  int64_t offset;  // of the first damaged byte, relative to the data start (negative before)
+};
+
+struct CallResult {
+  uint32_t status = BVB_PENDING;
+  uint32_t detail = 0;
+  uint32_t cycles = 0;
+  uint32_t ret = 0;
+  uint32_t abi_bad = 0;
+  uint32_t seqstat = 0, pc = 0, addr = 0;
+  uint32_t buf_addr[BVB_MAX_BUFS] = {};
+  std::vector<std::vector<uint8_t>> data;  // each buffer's data after the call
+  std::vector<GuardDamage> guard_damage;
+  std::string crash;  // the simulator died in this call: how
+  bool ok() const { return status == BVB_OK && abi_bad == 0 && guard_damage.empty(); }
+};
+
+// The byte at position i of every guard band.
+inline uint8_t guard_byte(size_t i) { return uint8_t(0xA5 ^ (i * 0x3B)); }
+
+// One line saying what went wrong with a call (status, fault, ABI, guards); "" when it is ok().
+std::string describe_failure(const Call &call, const CallResult &r);
+std::string abi_names(uint32_t abi_bad);
+const char *excause_name(uint32_t excause);
+
+struct FirmwareImage {
+  std::string elf;
+  const Registry *registry;
+};
+
+class Target {
+ public:
+  Target(FirmwareImage image, std::string simulator);
+
+  // Runs the calls (in order within a window) using up to `jobs` simulator processes at once.
+  // progress(done, total) is called as windows finish.
+  std::vector<CallResult> run(const std::vector<Call> &calls, int jobs = 1,
+                              const std::function<void(size_t, size_t)> &progress = {}) const;
+  CallResult run_one(const Call &call) const { return run({call}).front(); }
+
+  const Registry &registry() const { return *image_.registry; }
+  uint32_t null_call_cycles() const { return null_call_cycles_; }
+  static constexpr uint32_t kDefaultCycleLimit = 300000000;
+
+ private:
+  void run_window(const std::vector<const Call *> &calls, std::vector<CallResult *> &out) const;
+
+  FirmwareImage image_;
+  std::string simulator_;
+  mutable uint32_t null_call_cycles_ = 0;
+};
+
+// Default paths baked in at build time; BFBENCH_FIRMWARE / BFBENCH_SELFTEST_FIRMWARE override.
+FirmwareImage product_firmware();
+FirmwareImage selftest_firmware();
+std::string default_simulator();
+
+}  // namespace bvb
