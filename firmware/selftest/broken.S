@@ -37,10 +37,11 @@ BROKEN(bvb_broken_illegal_insn)
 	.dd 0xffffffff;
 	rts;
 
-/* A 32-bit load from an odd address. */
+/* A 32-bit load from an address that is 3 mod 4, inside the first word of dst. */
 BROKEN(bvb_broken_misaligned)
+	bitset (r2, 0);
+	bitset (r2, 1);
 	p0 = r2;
-	p0 += 1;
 	r0 = [p0];
 	rts;
 

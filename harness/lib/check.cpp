@@ -34,6 +34,9 @@ int64_t element(const std::vector<uint8_t> &d, size_t index, const View &v) {
   }
 }
 
+// An assembly kernel slower than this many times its C reference is taken to be hung.
+constexpr uint64_t kAsmCycleFactor = 8;
+
 uint32_t fnv(const std::string &s) {
   uint32_t h = 2166136261u;
   for (char c : s) h = (h ^ uint8_t(c)) * 16777619u;
@@ -139,11 +142,18 @@ Checker::Checker(const Target &target, CheckOptions opts)
 
 void Checker::reseed(const std::string &family) { rng_ = Rng((uint64_t(opts_.seed) << 32) ^ fnv(family)); }
 
+std::string Checker::resolve(const std::string &kernel) const {
+  auto it = opts_.kernel_alias.find(kernel);
+  return it == opts_.kernel_alias.end() ? kernel : it->second;
+}
+
 bool Checker::wants(const std::string &kernel) const {
-  return glob_match(opts_.kernel_glob, kernel) && target_.registry().find(kernel) != nullptr;
+  const std::string k = resolve(kernel);
+  return glob_match(opts_.kernel_glob, k) && target_.registry().find(k) != nullptr;
 }
 
 void Checker::add(CheckCall call, Observer observer) {
+  call.kernel = resolve(call.kernel);
   pending_.push_back({std::move(call), std::move(observer)});
 }
 
@@ -213,7 +223,28 @@ size_t Checker::flush() {
       std::fprintf(stderr, "\r  %zu/%zu calls", done, total);
       if (done == total) std::fprintf(stderr, "\r%*s\r", 30, "");
     };
-  std::vector<CallResult> results = target_.run(calls, opts_.jobs, progress);
+  // The C calls run first: their cycles set the assembly's watchdog, so a runaway assembly
+  // kernel costs a few times its reference's cycles, not the default limit.
+  std::vector<CallResult> results(calls.size());
+  for (uint32_t impl : {uint32_t(BVB_IMPL_C), uint32_t(BVB_IMPL_ASM)}) {
+    std::vector<Call> batch;
+    std::vector<size_t> index;
+    for (size_t i = 0; i < calls.size(); ++i) {
+      if (slots[i].impl != impl) continue;
+      Call c = calls[i];
+      if (impl == BVB_IMPL_ASM && !c.cycle_limit) {
+        for (size_t j = 0; j < calls.size(); ++j)
+          if (slots[j].pending == slots[i].pending && slots[j].impl == BVB_IMPL_C &&
+              results[j].status == BVB_OK)
+            c.cycle_limit = uint32_t(std::min<uint64_t>(Target::kDefaultCycleLimit,
+                                                        kAsmCycleFactor * uint64_t(results[j].cycles) + 200000));
+      }
+      batch.push_back(std::move(c));
+      index.push_back(i);
+    }
+    std::vector<CallResult> r = target_.run(batch, opts_.jobs, progress);
+    for (size_t k = 0; k < index.size(); ++k) results[index[k]] = std::move(r[k]);
+  }
 
   // Host reference per pending call, then judge each implementation against it.
   size_t s = 0;

@@ -87,6 +87,9 @@ struct CheckOptions {
   bool verbose = false;
   bool progress = false;   // a progress line on stderr
   bool run_c = true;       // also run the C reference on the Blackfin (else assembly only)
+  // Checks written for one kernel run against another of the same prototype (the self-test
+  // runs add_sat_u8's checks against its broken twins).
+  std::map<std::string, std::string> kernel_alias;
   std::string frames_real; // ../shared/frames-real, for crops of real frames
 };
 
@@ -116,6 +119,7 @@ class Checker {
   const std::map<std::string, std::map<std::string, Tally>> &tally() const { return tally_; }
 
  private:
+  std::string resolve(const std::string &kernel) const;
   void judge(const CheckCall &cc, uint32_t impl, const Call &call, const CallResult &r,
              const std::vector<std::vector<uint8_t>> &expected);
 

@@ -116,8 +116,7 @@ std::string describe_failure(const Call &call, const CallResult &r) {
         add("hardware error (HWERRCAUSE " + std::to_string(hw) + ") near pc " + hex(r.pc));
       else
         add(std::string("fault: ") + excause_name(r.seqstat & 0x3f) + " (EXCAUSE " +
-            hex(r.seqstat & 0x3f) + ") at pc " + hex(r.pc) +
-            ((r.seqstat & 0x3f) == 0x24 ? ", address " + hex(r.addr) : ""));
+            hex(r.seqstat & 0x3f) + ") at pc " + hex(r.pc));
       break;
     }
     case BVB_HANG:
