@@ -22,6 +22,7 @@
 
 namespace bvb {
 int extra_command(const std::string &name, int argc, char **argv, bool *handled);
+void print_extra_commands(FILE *out);
 }
 
 namespace {
@@ -42,10 +43,17 @@ const char *kMainHelp =
     "  check                    C reference (host and Blackfin) vs assembly, bit for bit\n"
     "  bench                    simulator cycles per call and per pixel, C vs assembly\n"
     "  run KERNEL               one kernel on given frames\n"
-    "  budgets                  compare the bench with ci/budgets.json\n"
+    "  budgets                  compare the bench with ci/budgets.json\n";
+const char *kMainHelpTail =
     "\n"
     "'bfbench COMMAND --help' describes each. Exit status: 0 success, 1 a check or budget\n"
     "failed, 2 bad usage or bad input.\n";
+
+void print_help(FILE *out) {
+  std::fputs(kMainHelp, out);
+  bvb::print_extra_commands(out);
+  std::fputs(kMainHelpTail, out);
+}
 
 // Minimal option scanner: --name value, --name=value, and flags.
 class Args {
@@ -314,7 +322,7 @@ int cmd_run(Args &args) {
   call.args = plan.call.args;
   call.bufs = plan.call.bufs;
   CallResult r = target.run_one(call);
-  std::string err = describe_failure(call, r);
+  std::string err = describe_failure(call, r, target.elf());
   if (!err.empty()) {
     std::fprintf(stderr, "bfbench: %s (%s): %s\n", req.kernel.c_str(), impl.c_str(), err.c_str());
     return 1;
@@ -408,13 +416,13 @@ int cmd_budgets(Args &args) {
 
 int main(int argc, char **argv) {
   if (argc < 2) {
-    std::fputs(kMainHelp, stderr);
+    print_help(stderr);
     return 2;
   }
   const std::string cmd = argv[1];
   try {
     if (cmd == "--help" || cmd == "-h" || cmd == "help") {
-      std::fputs(kMainHelp, stdout);
+      print_help(stdout);
       return 0;
     }
     Args args(argc, argv, 2);

@@ -1,15 +1,34 @@
 // bfbench commands beyond the kernel harness (scenes, pipelines, accuracy reports), dispatched
 // by name so each lives with its own code.
+#include <cstdio>
 #include <string>
+
+#include "scene/scene_cli.h"
 
 namespace bvb {
 
+struct ExtraCommand {
+  const char *name;
+  const char *summary;
+  int (*fn)(int argc, char **argv);  // argv[0] is the command's name
+};
+
+static const ExtraCommand kCommands[] = {
+    {"scene", "generate a synthetic scene with ground truth (or check one)", scene_command},
+};
+
 int extra_command(const std::string &name, int argc, char **argv, bool *handled) {
-  (void)name;
-  (void)argc;
-  (void)argv;
+  for (const auto &c : kCommands)
+    if (name == c.name) {
+      *handled = true;
+      return c.fn(argc, argv);
+    }
   *handled = false;
   return 2;
+}
+
+void print_extra_commands(FILE *out) {
+  for (const auto &c : kCommands) std::fprintf(out, "  %-24s %s\n", c.name, c.summary);
 }
 
 }  // namespace bvb

@@ -42,7 +42,7 @@ void check(Checker &ck) {
       for (auto &b : c.bufs) total += b.data.size() + 2 * b.guard + 8;
       const size_t room = place == BVB_PLACE_SCRATCH ? 4096u : place == BVB_PLACE_L1B ? 24576u : 32768u;
       for (auto &b : c.bufs) {
-        b.place = total <= room ? place : BVB_PLACE_SDRAM;
+        b.place = total <= room ? place : uint32_t(BVB_PLACE_SDRAM);
         b.skew = uint32_t(rng.uniform(0, 3));
       }
       ck.add(std::move(c));

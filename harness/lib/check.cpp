@@ -166,13 +166,13 @@ void Checker::judge(const CheckCall &cc, uint32_t impl, const Call &call, const 
   };
   const size_t before = failures_.size();
   if (!r.crash.empty()) {
-    fail(Failure::Crash, describe_failure(call, r));
+    fail(Failure::Crash, describe_failure(call, r, target_.elf()));
   } else if (r.status == BVB_FAULT) {
-    fail(Failure::Fault, describe_failure(call, r));
+    fail(Failure::Fault, describe_failure(call, r, target_.elf()));
   } else if (r.status == BVB_HANG) {
-    fail(Failure::Hang, describe_failure(call, r));
+    fail(Failure::Hang, describe_failure(call, r, target_.elf()));
   } else if (r.status != BVB_OK) {
-    fail(Failure::Other, describe_failure(call, r));
+    fail(Failure::Other, describe_failure(call, r, target_.elf()));
   } else {
     if (r.abi_bad) fail(Failure::Abi, "did not preserve " + abi_names(r.abi_bad));
     for (const auto &g : r.guard_damage)

@@ -11,6 +11,7 @@
 
 #include <unistd.h>
 
+#include "elf_symbols.h"
 #include "io.h"
 #include "simdriver.h"
 
@@ -103,7 +104,11 @@ std::string abi_names(uint32_t abi) {
   return s;
 }
 
-std::string describe_failure(const Call &call, const CallResult &r) {
+std::string describe_failure(const Call &call, const CallResult &r, const std::string &elf) {
+  auto at = [&](uint32_t pc) {
+    std::string sym = elf.empty() ? "" : symbolize(elf, pc);
+    return hex(pc) + (sym.empty() ? "" : " (" + sym + ")");
+  };
   std::string s;
   auto add = [&](const std::string &m) { s += (s.empty() ? "" : "; ") + m; };
   if (!r.crash.empty()) add("crashed the simulator: " + r.crash);
@@ -113,14 +118,14 @@ std::string describe_failure(const Call &call, const CallResult &r) {
     case BVB_FAULT: {
       uint32_t hw = (r.seqstat >> 14) & 0x1f;
       if (hw)
-        add("hardware error (HWERRCAUSE " + std::to_string(hw) + ") near pc " + hex(r.pc));
+        add("hardware error (HWERRCAUSE " + std::to_string(hw) + ", e.g. an access to unmapped memory) near pc " + at(r.pc));
       else
         add(std::string("fault: ") + excause_name(r.seqstat & 0x3f) + " (EXCAUSE " +
-            hex(r.seqstat & 0x3f) + ") at pc " + hex(r.pc));
+            hex(r.seqstat & 0x3f) + ") at pc " + at(r.pc));
       break;
     }
     case BVB_HANG:
-      add("hang: still running after its cycle limit, at pc " + hex(r.pc));
+      add("hang: still running after its cycle limit of " + std::to_string(r.limit) + " cycles, at pc " + at(r.pc));
       break;
     case BVB_BAD_COMMAND: add("firmware rejected the command (detail " + std::to_string(r.detail) + ")"); break;
     case BVB_NO_IMPL: add("no such implementation in the firmware"); break;
@@ -216,7 +221,7 @@ void Target::run_window(const std::vector<const Call *> &calls,
       std::string why = sim::describe(rr);
       if (got.fatal_pc)
         why += " (firmware fault: " + std::string(excause_name(got.fatal_seqstat & 0x3f)) +
-               " at pc " + hex(got.fatal_pc) + ")";
+               " at pc " + hex(got.fatal_pc) + " " + symbolize(image_.elf, got.fatal_pc) + ")";
       out[cur]->crash = why;
       resume = cur + 1;
     } else if (rr.ending != sim::Ending::Exited || rr.exit_code != 0) {
@@ -229,6 +234,7 @@ void Target::run_window(const std::vector<const Call *> &calls,
       std::memcpy(&cmd, win.data() + kHeaderSize + i * kCommandSize, sizeof cmd);
       CallResult &r = *out[i];
       r.status = cmd.status;
+      r.limit = cmd.cycle_limit;
       r.detail = cmd.detail;
       r.cycles = cmd.cycles;
       r.ret = cmd.ret;

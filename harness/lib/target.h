@@ -63,6 +63,7 @@ struct CallResult {
   uint32_t ret = 0;
   uint32_t abi_bad = 0;
   uint32_t seqstat = 0, pc = 0, addr = 0;
+  uint32_t limit = 0;  // the watchdog's cycle limit the call ran under
   uint32_t buf_addr[BVB_MAX_BUFS] = {};
   std::vector<std::vector<uint8_t>> data;  // each buffer's data after the call
   std::vector<GuardDamage> guard_damage;
@@ -74,7 +75,7 @@ struct CallResult {
 inline uint8_t guard_byte(size_t i) { return uint8_t(0xA5 ^ (i * 0x3B)); }
 
 // One line saying what went wrong with a call (status, fault, ABI, guards); "" when it is ok().
-std::string describe_failure(const Call &call, const CallResult &r);
+std::string describe_failure(const Call &call, const CallResult &r, const std::string &elf = "");
 std::string abi_names(uint32_t abi_bad);
 const char *excause_name(uint32_t excause);
 
@@ -94,6 +95,7 @@ class Target {
   CallResult run_one(const Call &call) const { return run({call}).front(); }
 
   const Registry &registry() const { return *image_.registry; }
+  const std::string &elf() const { return image_.elf; }
   uint32_t null_call_cycles() const { return null_call_cycles_; }
   static constexpr uint32_t kDefaultCycleLimit = 300000000;
 

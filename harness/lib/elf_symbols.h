@@ -1,0 +1,13 @@
+// Names for addresses in a firmware image, so a fault report says "bvb_sobel3x3_u8_asm+0x2a"
+// rather than a bare PC.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace bvb {
+
+// "function+0xoffset" for an address inside a function of the ELF, else "".
+std::string symbolize(const std::string &elf_path, uint32_t address);
+
+}  // namespace bvb
