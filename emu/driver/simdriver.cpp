@@ -52,16 +52,14 @@ std::string find_simulator(const std::string &default_path) {
   return path;
 }
 
-RunResult run(const RunSpec &spec) {
+Process::Process(const RunSpec &spec) {
   if (access(spec.simulator.c_str(), X_OK) != 0)
     throw SetupError("simulator not found or not executable: " + spec.simulator);
   if (access(spec.elf.c_str(), R_OK) != 0) throw SetupError("firmware not found: " + spec.elf);
-
   auto args = command_line(spec);
   std::vector<char *> argv;
   for (auto &a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
-
   int pipefd[2];
   if (pipe2(pipefd, O_CLOEXEC) != 0) throw SetupError(std::string("pipe: ") + std::strerror(errno));
   posix_spawn_file_actions_t fa;
@@ -77,43 +75,74 @@ RunResult run(const RunSpec &spec) {
     close(pipefd[0]);
     throw SetupError("cannot start " + spec.simulator + ": " + std::strerror(rc));
   }
+  pid_ = pid;
+  fd_ = pipefd[0];
+}
 
-  RunResult r;
-  const auto deadline = std::chrono::steady_clock::now() +
-                        std::chrono::milliseconds(int64_t(spec.wall_timeout_s * 1000));
-  bool timed_out = false;
+Process::~Process() {
+  if (pid_ > 0 && !exited_) {
+    kill(pid_, SIGKILL);
+    while (waitpid(pid_, &status_, 0) < 0 && errno == EINTR) {
+    }
+  }
+  if (fd_ >= 0) close(fd_);
+}
+
+void Process::drain(int timeout_ms) {
+  if (fd_ < 0) return;
+  pollfd p{fd_, POLLIN, 0};
+  int n = poll(&p, 1, timeout_ms);
+  if (n <= 0) return;
   char buf[4096];
-  for (;;) {
-    auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-                    deadline - std::chrono::steady_clock::now()).count();
-    if (left <= 0) {
+  ssize_t got = read(fd_, buf, sizeof buf);
+  if (got > 0) {
+    if (result_.output.size() < kMaxOutput) result_.output.append(buf, size_t(got));
+  } else if (got == 0) {
+    close(fd_);
+    fd_ = -1;
+  }
+}
+
+bool Process::running() {
+  drain(0);
+  if (exited_) return false;
+  pid_t r = waitpid(pid_, &status_, WNOHANG);
+  if (r == pid_) exited_ = true;
+  return !exited_;
+}
+
+RunResult Process::finish(double timeout_s) {
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::chrono::milliseconds(int64_t(timeout_s * 1000));
+  bool timed_out = false;
+  while (running()) {
+    if (std::chrono::steady_clock::now() >= deadline) {
       timed_out = true;
-      kill(pid, SIGKILL);
+      kill(pid_, SIGKILL);
+      while (waitpid(pid_, &status_, 0) < 0 && errno == EINTR) {
+      }
+      exited_ = true;
       break;
     }
-    pollfd p{pipefd[0], POLLIN, 0};
-    int n = poll(&p, 1, int(std::min<int64_t>(left, 1000)));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) continue;
-    ssize_t got = read(pipefd[0], buf, sizeof buf);
-    if (got < 0 && errno == EINTR) continue;
-    if (got <= 0) break;
-    if (r.output.size() < kMaxOutput) r.output.append(buf, size_t(got));
+    drain(fd_ >= 0 ? 100 : 0);
+    if (fd_ < 0) usleep(1000);
   }
-  close(pipefd[0]);
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  while (fd_ >= 0) drain(100);
   if (timed_out) {
-    r.ending = Ending::TimedOut;
-  } else if (WIFEXITED(status)) {
-    r.ending = Ending::Exited;
-    r.exit_code = WEXITSTATUS(status);
+    result_.ending = Ending::TimedOut;
+  } else if (WIFEXITED(status_)) {
+    result_.ending = Ending::Exited;
+    result_.exit_code = WEXITSTATUS(status_);
   } else {
-    r.ending = Ending::Signalled;
-    r.signal = WTERMSIG(status);
+    result_.ending = Ending::Signalled;
+    result_.signal = WTERMSIG(status_);
   }
-  return r;
+  return result_;
+}
+
+RunResult run(const RunSpec &spec) {
+  Process p(spec);
+  return p.finish(spec.wall_timeout_s);
 }
 
 std::string describe(const RunResult &r) {

@@ -43,6 +43,25 @@ struct RunResult {
 constexpr uint32_t kSdramSize = 32u << 20;
 
 RunResult run(const RunSpec &spec);
+
+// A simulator run the caller talks to while it runs (through a mapped file).
+class Process {
+ public:
+  explicit Process(const RunSpec &spec);  // starts it; throws SetupError
+  ~Process();                             // kills it if still running
+  Process(const Process &) = delete;
+  Process &operator=(const Process &) = delete;
+  bool running();                         // also drains its output
+  RunResult finish(double timeout_s);     // waits (kills after timeout_s) and reports
+  const std::string &output() const { return result_.output; }
+
+ private:
+  void drain(int timeout_ms);
+  int pid_ = -1, fd_ = -1;
+  bool exited_ = false;
+  int status_ = 0;
+  RunResult result_;
+};
 std::vector<std::string> command_line(const RunSpec &spec);
 std::string describe(const RunResult &r);
 

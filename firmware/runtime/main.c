@@ -126,10 +126,24 @@ int main(void) {
   h->null_call_cycles = null_call.cycles;
 
   struct bvb_command *cmds = (struct bvb_command *)(h + 1);
-  for (uint32_t i = h->first; i < h->ncommands; ++i) {
-    h->current = i;
-    run_command(&cmds[i], window, h->window_size, null_call.cycles);
+  volatile struct bvb_header *vh = h; /* the host writes it while we run */
+  for (;;) {
+    for (uint32_t i = vh->first; i < vh->ncommands; ++i) {
+      vh->current = i;
+      run_command(&cmds[i], window, h->window_size, null_call.cycles);
+    }
+    vh->state = BVB_FW_DONE;
+    if (!(vh->flags & BVB_SERVE)) return 0;
+    const uint32_t seen = vh->request;
+    vh->served = seen;
+    while (vh->request == seen) {
+    }
+    __asm__ volatile("" ::: "memory"); /* commands and buffers changed under us */
+    if (vh->request == BVB_STOP) return 0;
+    if (vh->ncommands > (h->window_size - sizeof *h) / sizeof(struct bvb_command)) {
+      vh->state = BVB_FW_BAD_HEADER;
+      return 1;
+    }
+    vh->state = BVB_FW_RUNNING;
   }
-  h->state = BVB_FW_DONE;
-  return 0;
 }

@@ -8,7 +8,12 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <chrono>
+#include <memory>
 
+#include <fcntl.h>
+
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include "elf_symbols.h"
@@ -142,6 +147,81 @@ std::string describe_failure(const Call &call, const CallResult &r, const std::s
   return s;
 }
 
+namespace {
+
+// Writes call c as command `index` of the window, its buffers (with guard bands) at offsets.
+// Returns the cycle limit it runs under.
+uint32_t encode_call(const Call &c, const std::vector<uint32_t> &offsets, uint32_t index, uint8_t *win,
+                     bool with_persistent) {
+  bvb_command cmd{};
+  cmd.kernel = c.kernel;
+  cmd.impl = c.impl;
+  cmd.cycle_limit = c.cycle_limit ? c.cycle_limit : Target::kDefaultCycleLimit;
+  cmd.nargs = uint32_t(c.args.size());
+  cmd.nbufs = uint32_t(c.bufs.size());
+  for (size_t a = 0; a < c.args.size(); ++a) {
+    cmd.args[a] = c.args[a].value;
+    if (c.args[a].is_buffer) cmd.argbuf |= 1u << a;
+  }
+  for (size_t b = 0; b < c.bufs.size(); ++b) {
+    const Buffer &buf = c.bufs[b];
+    cmd.bufs[b] = {offsets[b], uint32_t(buf.data.size()), buf.guard, buf.place, buf.align, buf.skew};
+    if (buf.persistent && !with_persistent) continue;
+    uint8_t *p = win + offsets[b];
+    for (uint32_t g = 0; g < buf.guard; ++g) p[g] = p[buf.guard + buf.data.size() + g] = guard_byte(g);
+    std::copy(buf.data.begin(), buf.data.end(), p + buf.guard);
+  }
+  std::memcpy(win + kHeaderSize + size_t(index) * kCommandSize, &cmd, sizeof cmd);
+  return cmd.cycle_limit;
+}
+
+void decode_result(const Call &c, const std::vector<uint32_t> &offsets, uint32_t index, const uint8_t *win,
+                   CallResult &r) {
+  bvb_command cmd;
+  std::memcpy(&cmd, win + kHeaderSize + size_t(index) * kCommandSize, sizeof cmd);
+  r.status = cmd.status;
+  r.limit = cmd.cycle_limit;
+  r.detail = cmd.detail;
+  r.cycles = cmd.cycles;
+  r.ret = cmd.ret;
+  r.abi_bad = cmd.abi_bad;
+  r.seqstat = cmd.fault_seqstat;
+  r.pc = cmd.fault_pc;
+  r.addr = cmd.fault_addr;
+  std::copy(std::begin(cmd.buf_addr), std::end(cmd.buf_addr), r.buf_addr);
+  r.data.clear();
+  r.guard_damage.clear();
+  for (size_t b = 0; b < c.bufs.size(); ++b) {
+    const Buffer &buf = c.bufs[b];
+    const uint8_t *p = win + offsets[b];
+    const size_t n = buf.data.size();
+    r.data.emplace_back(p + buf.guard, p + buf.guard + n);
+    for (uint32_t g = 0; g < buf.guard; ++g)
+      if (p[buf.guard - 1 - g] != guard_byte(buf.guard - 1 - g)) {
+        r.guard_damage.push_back({int(b), true, -int64_t(g) - 1});
+        break;
+      }
+    for (uint32_t g = 0; g < buf.guard; ++g)
+      if (p[buf.guard + n + g] != guard_byte(g)) {
+        r.guard_damage.push_back({int(b), false, int64_t(n + g)});
+        break;
+      }
+  }
+}
+
+std::string make_temp_file() {
+  const char *tmpdir = std::getenv("TMPDIR");
+  std::string tmpl = std::string(tmpdir && *tmpdir ? tmpdir : "/tmp") + "/bfbench-window-XXXXXX";
+  std::vector<char> pathbuf(tmpl.begin(), tmpl.end());
+  pathbuf.push_back(0);
+  int fd = mkstemp(pathbuf.data());
+  if (fd < 0) throw sim::SetupError("cannot create a window file: " + tmpl);
+  close(fd);
+  return pathbuf.data();
+}
+
+}  // namespace
+
 Target::Target(FirmwareImage image, std::string simulator)
     : image_(std::move(image)), simulator_(std::move(simulator)) {}
 
@@ -155,42 +235,14 @@ void Target::run_window(const std::vector<const Call *> &calls,
   h.window_size = l.size;
   h.ncommands = uint32_t(calls.size());
   uint64_t limit_total = 0;
-  for (size_t i = 0; i < calls.size(); ++i) {
-    const Call &c = *calls[i];
-    bvb_command cmd{};
-    cmd.kernel = c.kernel;
-    cmd.impl = c.impl;
-    cmd.cycle_limit = c.cycle_limit ? c.cycle_limit : kDefaultCycleLimit;
-    limit_total += cmd.cycle_limit;
-    cmd.nargs = uint32_t(c.args.size());
-    cmd.nbufs = uint32_t(c.bufs.size());
-    for (size_t a = 0; a < c.args.size(); ++a) {
-      cmd.args[a] = c.args[a].value;
-      if (c.args[a].is_buffer) cmd.argbuf |= 1u << a;
-    }
-    for (size_t b = 0; b < c.bufs.size(); ++b) {
-      const Buffer &buf = c.bufs[b];
-      cmd.bufs[b] = {l.offsets[i][b], uint32_t(buf.data.size()), buf.guard, buf.place, buf.align, buf.skew};
-      uint8_t *p = win.data() + l.offsets[i][b];
-      for (uint32_t g = 0; g < buf.guard; ++g) p[g] = p[buf.guard + buf.data.size() + g] = guard_byte(g);
-      std::copy(buf.data.begin(), buf.data.end(), p + buf.guard);
-    }
-    std::memcpy(win.data() + kHeaderSize + i * kCommandSize, &cmd, sizeof cmd);
-  }
+  for (size_t i = 0; i < calls.size(); ++i)
+    limit_total += encode_call(*calls[i], l.offsets[i], uint32_t(i), win.data(), true);
 
-  const char *tmpdir = std::getenv("TMPDIR");
-  std::string tmpl = std::string(tmpdir && *tmpdir ? tmpdir : "/tmp") + "/bfbench-window-XXXXXX";
-  std::vector<char> pathbuf(tmpl.begin(), tmpl.end());
-  pathbuf.push_back(0);
-  int fd = mkstemp(pathbuf.data());
-  if (fd < 0) throw sim::SetupError("cannot create a window file: " + tmpl);
-  close(fd);
-  const std::string path = pathbuf.data();
+  const std::string path = make_temp_file();
   struct Cleanup {
     std::string p;
     ~Cleanup() { std::remove(p.c_str()); }
   } cleanup{path};
-
   sim::RunSpec spec;
   spec.simulator = simulator_;
   spec.elf = image_.elf;
@@ -229,38 +281,7 @@ void Target::run_window(const std::vector<const Call *> &calls,
     }
 
     for (uint32_t i = h.first; i < std::min<uint32_t>(resume, uint32_t(calls.size())); ++i) {
-      const Call &c = *calls[i];
-      bvb_command cmd;
-      std::memcpy(&cmd, win.data() + kHeaderSize + i * kCommandSize, sizeof cmd);
-      CallResult &r = *out[i];
-      r.status = cmd.status;
-      r.limit = cmd.cycle_limit;
-      r.detail = cmd.detail;
-      r.cycles = cmd.cycles;
-      r.ret = cmd.ret;
-      r.abi_bad = cmd.abi_bad;
-      r.seqstat = cmd.fault_seqstat;
-      r.pc = cmd.fault_pc;
-      r.addr = cmd.fault_addr;
-      std::copy(std::begin(cmd.buf_addr), std::end(cmd.buf_addr), r.buf_addr);
-      r.data.clear();
-      r.guard_damage.clear();
-      for (size_t b = 0; b < c.bufs.size(); ++b) {
-        const Buffer &buf = c.bufs[b];
-        const uint8_t *p = win.data() + l.offsets[i][b];
-        const size_t n = buf.data.size();
-        r.data.emplace_back(p + buf.guard, p + buf.guard + n);
-        for (uint32_t g = 0; g < buf.guard; ++g)
-          if (p[buf.guard - 1 - g] != guard_byte(buf.guard - 1 - g)) {
-            r.guard_damage.push_back({int(b), true, -int64_t(g) - 1});
-            break;
-          }
-        for (uint32_t g = 0; g < buf.guard; ++g)
-          if (p[buf.guard + n + g] != guard_byte(g)) {
-            r.guard_damage.push_back({int(b), false, int64_t(n + g)});
-            break;
-          }
-      }
+      decode_result(*calls[i], l.offsets[i], uint32_t(i), win.data(), *out[i]);
     }
     if (resume >= calls.size()) return;
     h.first = resume;
@@ -328,6 +349,102 @@ std::vector<CallResult> Target::run(const std::vector<Call> &calls, int jobs,
   for (auto &t : threads) t.join();
   if (error) std::rethrow_exception(error);
   return results;
+}
+
+struct Session::Impl {
+  const Target &target;
+  std::string path;
+  Layout layout;
+  std::vector<size_t> sizes;  // buffer sizes the layout was made for
+  uint8_t *win = nullptr;
+  std::unique_ptr<sim::Process> proc;
+  uint32_t request = 0;
+
+  explicit Impl(const Target &t) : target(t) {}
+  ~Impl() {
+    if (proc && win) {
+      auto *h = reinterpret_cast<volatile bvb_header *>(win);
+      h->request = BVB_STOP;
+      proc->finish(10);
+    }
+    if (win) munmap(win, layout.size);
+    if (!path.empty()) std::remove(path.c_str());
+  }
+
+  bvb_header *header() { return reinterpret_cast<bvb_header *>(win); }
+
+  void start(const Call &c) {
+    std::vector<const Call *> one = {&c};
+    layout = lay_out(one);
+    for (const auto &b : c.bufs) sizes.push_back(b.data.size());
+    path = make_temp_file();
+    if (truncate(path.c_str(), off_t(layout.size)) != 0) throw sim::SetupError("cannot size " + path);
+    int fd = open(path.c_str(), O_RDWR);
+    if (fd < 0) throw sim::SetupError("cannot open " + path);
+    void *m = mmap(nullptr, layout.size, PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+    close(fd);
+    if (m == MAP_FAILED) throw sim::SetupError("cannot map " + path);
+    win = static_cast<uint8_t *>(m);
+    bvb_header h{};
+    h.magic = BVB_MAGIC;
+    h.version = BVB_VERSION;
+    h.window_size = layout.size;
+    h.ncommands = 1;
+    h.flags = BVB_SERVE;
+    std::memcpy(win, &h, sizeof h);
+    encode_call(c, layout.offsets[0], 0, win, true);
+    sim::RunSpec spec;
+    spec.simulator = target.simulator();
+    spec.elf = target.elf();
+    spec.maps.push_back({path, BVB_WINDOW_ADDR, layout.size});
+    proc = std::make_unique<sim::Process>(spec);
+  }
+
+  // Waits until the firmware has served the current request.
+  void wait(uint32_t cycle_limit) {
+    auto *h = reinterpret_cast<volatile bvb_header *>(win);
+    // Backstop only: the firmware's watchdog bounds the call itself.
+    const auto deadline = std::chrono::steady_clock::now() +
+                          std::chrono::seconds(120 + int64_t(cycle_limit / 5000000));
+    int spins = 0;
+    for (;;) {
+      std::atomic_thread_fence(std::memory_order_acquire);
+      if (h->served == request && h->state == BVB_FW_DONE) return;
+      if (h->state == BVB_FW_BAD_HEADER) throw sim::SetupError("firmware rejected the window");
+      if (!proc->running()) {
+        sim::RunResult r = proc->finish(1);
+        proc.reset();
+        throw sim::SetupError("simulator died during a call: " + sim::describe(r));
+      }
+      if (std::chrono::steady_clock::now() > deadline)
+        throw sim::SetupError("simulator did not answer in time");
+      if (++spins > 1000) usleep(50);
+    }
+  }
+};
+
+Session::Session(const Target &target) : impl_(new Impl(target)) {}
+Session::~Session() { delete impl_; }
+
+CallResult Session::call(const Call &c) {
+  Impl &s = *impl_;
+  if (!s.proc && s.win) throw sim::SetupError("session is over (the simulator died)");
+  if (!s.win) {
+    s.start(c);
+  } else {
+    if (c.bufs.size() != s.sizes.size()) throw InputError("session call with another buffer layout");
+    for (size_t b = 0; b < c.bufs.size(); ++b)
+      if (c.bufs[b].data.size() != s.sizes[b]) throw InputError("session call with other buffer sizes");
+    encode_call(c, s.layout.offsets[0], 0, s.win, false);
+    auto *h = reinterpret_cast<volatile bvb_header *>(s.win);
+    h->state = BVB_FW_RUNNING;
+    std::atomic_thread_fence(std::memory_order_release);
+    h->request = ++s.request;
+  }
+  s.wait(c.cycle_limit ? c.cycle_limit : Target::kDefaultCycleLimit);
+  CallResult r;
+  decode_result(c, s.layout.offsets[0], 0, s.win, r);
+  return r;
 }
 
 namespace {

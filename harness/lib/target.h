@@ -33,6 +33,9 @@ struct Buffer {
   uint32_t guard = 64;
   uint32_t align = 4;
   uint32_t skew = 0;
+  // In a Session, written into the window only by the first call: later calls of the session
+  // see what the kernel left there (a pipeline's state between frames).
+  bool persistent = false;
 };
 
 struct Arg {
@@ -96,6 +99,7 @@ class Target {
 
   const Registry &registry() const { return *image_.registry; }
   const std::string &elf() const { return image_.elf; }
+  const std::string &simulator() const { return simulator_; }
   uint32_t null_call_cycles() const { return null_call_cycles_; }
   static constexpr uint32_t kDefaultCycleLimit = 300000000;
 
@@ -105,6 +109,24 @@ class Target {
   FirmwareImage image_;
   std::string simulator_;
   mutable uint32_t null_call_cycles_ = 0;
+};
+
+// One simulator process serving a sequence of calls of one shape (BVB_SERVE in the window): a
+// frame sequence through a pipeline without a simulator start per frame. Buffers marked
+// persistent keep, from one call to the next, what the kernel left in them.
+class Session {
+ public:
+  explicit Session(const Target &target);
+  ~Session();
+  Session(const Session &) = delete;
+  Session &operator=(const Session &) = delete;
+  // The first call fixes the window's layout; later calls must have buffers of the same sizes.
+  // Throws sim::SetupError when the simulator dies (the session is then over).
+  CallResult call(const Call &c);
+
+ private:
+  struct Impl;
+  Impl *impl_;
 };
 
 // Default paths baked in at build time; BFBENCH_FIRMWARE / BFBENCH_SELFTEST_FIRMWARE override.

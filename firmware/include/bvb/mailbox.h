@@ -107,6 +107,14 @@ struct bvb_command {
   uint32_t reserved[4];
 };
 
+/* Serving: with BVB_SERVE in flags the firmware, having run its commands, sets served = request
+ * and polls request. The host, which maps the same file, rewrites commands and buffers in place
+ * and bumps request; the firmware runs commands [first, ncommands) again. request = BVB_STOP
+ * ends the run. One simulator process then serves a whole frame sequence, buffers the host does
+ * not rewrite (a pipeline's state) staying in the window between frames. */
+#define BVB_SERVE 1u
+#define BVB_STOP 0xFFFFFFFFu
+
 enum bvb_fw_state {
   BVB_FW_NOT_STARTED = 0,
   BVB_FW_RUNNING = 1,
@@ -121,7 +129,9 @@ struct bvb_header {
   uint32_t window_size;   /* bytes mapped */
   uint32_t ncommands;
   uint32_t first;         /* first command to run: lets the host resume after a crash */
-  uint32_t reserved_host[3];
+  uint32_t flags;         /* BVB_SERVE: after the commands, wait for more (see below) */
+  uint32_t request;       /* serving: the host bumps it when new commands are in place */
+  uint32_t served;        /* serving: the firmware sets it to request when they are done */
   /* written by the firmware */
   uint32_t state;          /* enum bvb_fw_state */
   uint32_t current;        /* the command being run: the culprit if the simulator dies */
