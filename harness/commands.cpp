@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 
+#include "pipeline/runner.h"
 #include "scene/scene_cli.h"
 
 namespace bvb {
@@ -15,6 +16,7 @@ struct ExtraCommand {
 
 static const ExtraCommand kCommands[] = {
     {"scene", "generate a synthetic scene with ground truth (or check one)", scene_command},
+    {"pipeline", "run a vision pipeline frame by frame (bfbench pipeline --help)", pipeline_command},
 };
 
 int extra_command(const std::string &name, int argc, char **argv, bool *handled) {
