@@ -17,7 +17,10 @@
 
 namespace {
 
-constexpr int32_t kAlpha2 = 1024;  // alpha = 8: the lower end of the legal range
+// alpha = 8, the lower end of the legal range: on the frames-real sequences (double precision,
+// alpha 4..64 tried) it gives the lowest mean angular error at N = 100 and is within 0.3% of the
+// lowest mean EPE at N = 10.
+constexpr int32_t kAlpha2 = 1024;
 constexpr double kQ9 = 1.0 / 512;
 
 struct FixedFlow {
