@@ -16,6 +16,8 @@ struct Param {
   uint32_t seed;
 };
 
+void PrintTo(const Param &p, std::ostream *os) { *os << p.family->name << " seed " << p.seed; }
+
 std::vector<Param> params() {
   std::vector<Param> p;
   for (const Family *f : families())

@@ -37,6 +37,8 @@ const Case kCases[] = {
     {"broken_wild_jump", Failure::Fault, ""},
 };
 
+void PrintTo(const Case &c, std::ostream *os) { *os << c.kernel; }
+
 std::vector<Failure> check_as(const std::string &kernel, size_t *asm_calls) {
   Target target(selftest_firmware(), default_simulator());
   CheckOptions o;
