@@ -18,7 +18,8 @@ static int32_t find(struct label *l, int32_t a) {
   return a;
 }
 
-/* Merges roots a != b; the smaller label (the blob met first) stays root. */
+/* Merges roots a != b; the smaller label (the blob met first) stays root, so its min_y, the
+ * row it was created on, is already the merged blob's. */
 static int32_t unite(struct label *l, int32_t a, int32_t b) {
   const int32_t r = a < b ? a : b, o = a < b ? b : a;
   struct label *R = &l[r], *O = &l[o];
@@ -27,7 +28,6 @@ static int32_t unite(struct label *l, int32_t a, int32_t b) {
   R->sum_y += O->sum_y;
   if (O->min_x < R->min_x) R->min_x = O->min_x;
   if (O->max_x > R->max_x) R->max_x = O->max_x;
-  if (O->min_y < R->min_y) R->min_y = O->min_y;
   if (O->max_y > R->max_y) R->max_y = O->max_y;
   O->parent = r;
   return r;
