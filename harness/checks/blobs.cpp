@@ -82,7 +82,7 @@ std::vector<uint8_t> blocky_frame(int w, int h, Rng &rng, std::vector<std::array
 
 // Ranges around a palette colour, from exact to loose; the bounds themselves are in range.
 bvb_blob_class class_around(const std::array<int, 3> &col, Rng &rng) {
-  const int t = rng.uniform(0, 2) == 0 ? 0 : rng.uniform(1, 12);
+  const int t = rng.uniform(0, 2) == 0 ? 0 : rng.uniform(1, 40);
   return {col[0] - t, col[0] + t, col[1] - t, col[1] + t, col[2] - t, col[2] + t};
 }
 
@@ -204,6 +204,14 @@ void check(Checker &ck) {
                             make_plane(pv, s.w / 2, s.h, s.w / 2, rng, fr), s.w, s.h);
         for (int c = 0; c < prm.nclasses; ++c) prm.cls[c] = random_class(rng);
         src = std::string("planes ") + pattern_name(pat) + "/" + pattern_name(pu) + "/" + pattern_name(pv);
+      }
+      // Half the classes are built around the colour of a pixel of the frame, so they hold
+      // something whatever the frame.
+      for (int c = 0; c < prm.nclasses; ++c) {
+        if (rng.uniform(0, 1)) continue;
+        const int x = rng.uniform(0, s.w - 1), y = rng.uniform(0, s.h - 1);
+        const uint8_t *q = &packed[(size_t(y) * s.w + (x & ~1)) * 2];
+        prm.cls[c] = class_around({q[1 + 2 * (x & 1)], q[0], q[2]}, rng);
       }
       const int full = s.w * s.h;
       const int r = rng.uniform(0, 4);

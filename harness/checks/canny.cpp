@@ -3,6 +3,7 @@
 #include "bvb/canny.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 
 #include "family.h"
@@ -124,7 +125,18 @@ void check(Checker &ck) {
         g = sobel(plane.data(), s.w, s.h, ss, gs, rng);
         src = std::string("sobel of ") + pattern_name(pat);
       }
-      int low = rng.uniform(1, 300), high = low + rng.uniform(0, 600);
+      // Thresholds mostly relative to the frame's largest interior magnitude, so that ramps and
+      // real frames have edges too; sometimes absolute, equal, or the lowest legal.
+      int top = 1;
+      for (int y = 1; y < s.h - 1; ++y)
+        for (int x = 1; x < s.w - 1; ++x)
+          top = std::max(top, std::abs(g.gx[size_t(y) * gs + x]) + std::abs(g.gy[size_t(y) * gs + x]));
+      int low, high;
+      if (rng.uniform(0, 3) == 0) {
+        low = rng.uniform(1, 300), high = low + rng.uniform(0, 600);
+      } else {
+        low = rng.uniform(1, std::max(1, top * 3 / 5)), high = low + rng.uniform(0, top);
+      }
       if (rng.uniform(0, 7) == 0) low = high = rng.uniform(1, 2040);
       if (rng.uniform(0, 7) == 0) low = 1;
       const int full = BVB_CANNY_STACK_ENTRIES(s.w, s.h);
