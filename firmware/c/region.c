@@ -2,77 +2,91 @@
 
 #define IN_REGION 255
 
+/* The growing region: its statistics and the FIFO of pixels whose neighbours are still to be
+ * looked at. */
+struct grow {
+  const uint8_t *img;
+  uint8_t *mask;
+  int32_t *queue;
+  int32_t cap, head, tail, queued, dropped;
+  int32_t tol, count, sum, tol_count; /* tol_count = tol * count */
+  int32_t sum_x, sum_y, min_x, min_y, max_x, max_y;
+};
+
+/* Pixel (x, y), at offset io in img and mo in mask, joins the region if it is not in it yet and
+ * |I * count - sum| <= tol * count. */
+static inline void visit(struct grow *g, int32_t x, int32_t y, int32_t io, int32_t mo) {
+  if (g->mask[mo]) return;
+  const int32_t i = g->img[io];
+  int32_t d = i * g->count - g->sum;
+  if (d < 0) d = -d;
+  if (d > g->tol_count) return;
+  g->mask[mo] = IN_REGION;
+  g->count += 1;
+  g->sum += i;
+  g->tol_count += g->tol;
+  g->sum_x += x;
+  g->sum_y += y;
+  if (x < g->min_x) g->min_x = x;
+  if (x > g->max_x) g->max_x = x;
+  if (y < g->min_y) g->min_y = y;
+  if (y > g->max_y) g->max_y = y;
+  if (g->queued < g->cap) {
+    g->queue[g->tail] = (y << 16) | x;
+    if (++g->tail == g->cap) g->tail = 0;
+    g->queued += 1;
+  } else {
+    g->dropped += 1;
+  }
+}
+
 int32_t bvb_region_grow_c(const uint8_t *img, int32_t img_stride, uint8_t *mask, int32_t mask_stride,
                           int32_t width, int32_t height, const struct bvb_region_params *p,
                           int32_t *queue, int32_t queue_cap, struct bvb_region_stats *stats) {
   for (int32_t y = 0; y < height; ++y)
     for (int32_t x = 0; x < width; ++x) mask[y * mask_stride + x] = 0;
 
-  int32_t count = 0, sum = 0, sum_x = 0, sum_y = 0, dropped = 0;
-  int32_t min_x = width, min_y = height, max_x = -1, max_y = -1;
-  const int32_t sx = p->seed_x, sy = p->seed_y, tol = p->tol;
-  const int32_t nneigh = p->connectivity == 8 ? 8 : 4;
-  static const int8_t ndx[8] = {-1, 1, 0, 0, -1, 1, -1, 1};
-  static const int8_t ndy[8] = {0, 0, -1, 1, -1, -1, 1, 1};
+  struct grow g;
+  g.img = img, g.mask = mask, g.queue = queue;
+  g.cap = queue_cap, g.head = 0, g.tail = 0, g.queued = 0, g.dropped = 0;
+  g.tol = p->tol, g.count = 0, g.sum = 0, g.tol_count = 0;
+  g.sum_x = 0, g.sum_y = 0, g.min_x = width, g.min_y = height, g.max_x = -1, g.max_y = -1;
+  const int32_t sx = p->seed_x, sy = p->seed_y, eight = p->connectivity == 8;
+  const int32_t is = img_stride, ms = mask_stride;
 
-  int32_t head = 0, tail = 0, queued = 0;
-  if (sx >= 0 && sx < width && sy >= 0 && sy < height) {
-    const int32_t i = img[sy * img_stride + sx];
-    mask[sy * mask_stride + sx] = IN_REGION;
-    count = 1, sum = i, sum_x = sx, sum_y = sy;
-    min_x = max_x = sx, min_y = max_y = sy;
-    if (queue_cap > 0) {
-      queue[0] = (sy << 16) | sx;
-      tail = queue_cap > 1 ? 1 : 0;
-      queued = 1;
-    } else {
-      dropped = 1;
-    }
-  }
+  /* The seed joins unconditionally: against an empty region (count 0, sum 0) the test
+   * |I * 0 - 0| <= tol * 0 holds. */
+  if (sx >= 0 && sx < width && sy >= 0 && sy < height) visit(&g, sx, sy, sy * is + sx, sy * ms + sx);
 
-  while (queued > 0) {
-    const int32_t q = queue[head];
-    if (++head == queue_cap) head = 0;
-    --queued;
+  while (g.queued > 0) {
+    const int32_t q = g.queue[g.head];
+    if (++g.head == g.cap) g.head = 0;
+    g.queued -= 1;
     const int32_t x = q & 0xFFFF, y = q >> 16;
-    for (int32_t k = 0; k < nneigh; ++k) {
-      const int32_t nx = x + ndx[k], ny = y + ndy[k];
-      if (nx < 0 || nx >= width || ny < 0 || ny >= height) continue;
-      uint8_t *mp = &mask[ny * mask_stride + nx];
-      if (*mp) continue;
-      const int32_t i = img[ny * img_stride + nx];
-      int32_t d = i * count - sum;
-      if (d < 0) d = -d;
-      if (d > tol * count) continue;
-      *mp = IN_REGION;
-      ++count;
-      sum += i;
-      sum_x += nx;
-      sum_y += ny;
-      if (nx < min_x) min_x = nx;
-      if (nx > max_x) max_x = nx;
-      if (ny < min_y) min_y = ny;
-      if (ny > max_y) max_y = ny;
-      if (queued < queue_cap) {
-        queue[tail] = (ny << 16) | nx;
-        if (++tail == queue_cap) tail = 0;
-        ++queued;
-      } else {
-        ++dropped;
-      }
+    const int32_t io = y * is + x, mo = y * ms + x;
+    const int32_t left = x > 0, right = x < width - 1, up = y > 0, down = y < height - 1;
+    if (left) visit(&g, x - 1, y, io - 1, mo - 1);
+    if (right) visit(&g, x + 1, y, io + 1, mo + 1);
+    if (up) visit(&g, x, y - 1, io - is, mo - ms);
+    if (down) visit(&g, x, y + 1, io + is, mo + ms);
+    if (eight) {
+      if (up && left) visit(&g, x - 1, y - 1, io - is - 1, mo - ms - 1);
+      if (up && right) visit(&g, x + 1, y - 1, io - is + 1, mo - ms + 1);
+      if (down && left) visit(&g, x - 1, y + 1, io + is - 1, mo + ms - 1);
+      if (down && right) visit(&g, x + 1, y + 1, io + is + 1, mo + ms + 1);
     }
   }
 
-  stats->count = count;
-  stats->sum = sum;
-  stats->min_x = min_x;
-  stats->min_y = min_y;
-  stats->max_x = max_x;
-  stats->max_y = max_y;
-  stats->sum_x = sum_x;
-  stats->sum_y = sum_y;
-  stats->dropped = dropped;
-  return count;
+  stats->count = g.count;
+  stats->sum = g.sum;
+  stats->min_x = g.min_x;
+  stats->min_y = g.min_y;
+  stats->max_x = g.max_x;
+  stats->max_y = g.max_y;
+  stats->sum_x = g.sum_x;
+  stats->sum_y = g.sum_y;
+  stats->dropped = g.dropped;
+  return g.count;
 }
 
 void bvb_free_space_c(const uint8_t *mask, int32_t mask_stride, int32_t width, int32_t height,
