@@ -2,6 +2,13 @@
 
 #define NO_CLASS 0xFF
 
+/* A layout hint only (the simulator charges 9 cycles for an unpredicted taken branch). */
+#if defined(__GNUC__)
+#define BVB_LIKELY(x) __builtin_expect(!!(x), 1)
+#else
+#define BVB_LIKELY(x) (x)
+#endif
+
 struct run {
   int32_t start, end, cls, label; /* label -1: left out (label table full) */
 };
@@ -73,6 +80,8 @@ int32_t bvb_blobs_uyvy_c(const uint8_t *uyvy, int32_t stride, int32_t width, int
     for (int32_t x = 0; x < width; x += 2, row += 4) {
       const uint8_t uv = lut_u[row[0]] & lut_v[row[2]];
       const int32_t c0 = lowbit[lut_y[row[1]] & uv], c1 = lowbit[lut_y[row[3]] & uv];
+      /* Most pairs continue the run (or the stretch of no class) they are in. */
+      if (BVB_LIKELY(((c0 ^ run_cls) | (c1 ^ run_cls)) == 0)) continue;
       if (c0 != run_cls) {
         if (run_cls != NO_CLASS) {
           cur[ncur].start = run_start, cur[ncur].end = x - 1, cur[ncur].cls = run_cls;

@@ -4,6 +4,14 @@
 #define NOT_EDGE 0
 #define WEAK 1
 
+/* A layout hint only: most pixels are below the low threshold, and the simulator charges 9
+ * cycles for an unpredicted taken branch. */
+#if defined(__GNUC__)
+#define BVB_LIKELY(x) __builtin_expect(!!(x), 1)
+#else
+#define BVB_LIKELY(x) (x)
+#endif
+
 static void magnitude_row(const int16_t *gx, const int16_t *gy, uint16_t *m, int32_t width) {
   for (int32_t x = 0; x < width; ++x) {
     int32_t a = gx[x], b = gy[x];
@@ -84,7 +92,7 @@ int32_t bvb_canny_c(const int16_t *gx, const int16_t *gy, int32_t grad_stride, u
     for (int32_t x = 1; x < width - 1; ++x) {
       const int32_t m = mc[x];
       uint8_t v = NOT_EDGE;
-      if (m >= low) {
+      if (!BVB_LIKELY(m < low)) {
         const int32_t sx = gxr[x], sy = gyr[x];
         const int32_t ax = sx < 0 ? -sx : sx, ay = sy < 0 ? -sy : sy;
         const int32_t s2 = (ax + ay) * (ax + ay), two_ax2 = 2 * ax * ax;
