@@ -2,6 +2,14 @@
 
 #define IN_REGION 255
 
+/* A layout hint only: inside the region most neighbours are in it already, and the simulator
+ * charges 9 cycles for an unpredicted taken branch. */
+#if defined(__GNUC__)
+#define BVB_LIKELY(x) __builtin_expect(!!(x), 1)
+#else
+#define BVB_LIKELY(x) (x)
+#endif
+
 /* The growing region: its statistics and the FIFO of pixels whose neighbours are still to be
  * looked at. */
 struct grow {
@@ -16,7 +24,7 @@ struct grow {
 /* Pixel (x, y), at offset io in img and mo in mask, joins the region if it is not in it yet and
  * |I * count - sum| <= tol * count. */
 static inline void visit(struct grow *g, int32_t x, int32_t y, int32_t io, int32_t mo) {
-  if (g->mask[mo]) return;
+  if (BVB_LIKELY(g->mask[mo] != 0)) return;
   const int32_t i = g->img[io];
   int32_t d = i * g->count - g->sum;
   if (d < 0) d = -d;
