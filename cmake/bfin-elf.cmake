@@ -2,6 +2,8 @@
 set(CMAKE_SYSTEM_NAME Generic)
 set(CMAKE_SYSTEM_PROCESSOR bfin)
 include(${CMAKE_CURRENT_LIST_DIR}/toolchain-prefix.cmake)
+# CMake re-reads this file for its compiler checks; they must see the same toolchain.
+list(APPEND CMAKE_TRY_COMPILE_PLATFORM_VARIABLES BFIN_TOOLCHAIN_DIR)
 
 set(CMAKE_C_COMPILER ${BFIN_TOOLCHAIN_DIR}/bin/bfin-elf-gcc)
 set(CMAKE_ASM_COMPILER ${BFIN_TOOLCHAIN_DIR}/bin/bfin-elf-gcc)

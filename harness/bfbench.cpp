@@ -279,12 +279,13 @@ int cmd_run(Args &args) {
                      "usage: bfbench run KERNEL --in FILE [--in FILE] --out FILE [--impl asm|c|host]\n"
                      "                  [--param K=V]... [--size WxH] [--firmware ELF]\n\n"
                      "Runs one kernel on the given frames (binary or ASCII PGM/PPM, or raw UYVY with\n"
-                     "--size) and writes its output; prints the simulator cycles of the call.\n"))
+                     "--size) and writes its output; prints the simulator cycles of the call. --impl defaults\n"
+                     "to asm, or c for kernels without assembly.\n"))
     return 0;
   RunRequest req;
   req.inputs = args.values("--in");
   req.output = args.value("--out", "");
-  std::string impl = args.value("--impl", "asm");
+  std::string impl = args.value("--impl", "");
   for (const auto &p : args.values("--param")) req.params.set(p);
   auto sizes = parse_sizes(args);
   if (sizes.size() > 1) throw Usage("--size given more than once");
@@ -296,6 +297,7 @@ int cmd_run(Args &args) {
   if (req.inputs.empty()) throw Usage("run needs --in FILE");
   if (req.output.empty()) throw Usage("run needs --out FILE");
   const KernelInfo &k = Registry::product().get(req.kernel);
+  if (impl.empty()) impl = k.has_asm ? "asm" : "c";
   const Family *f = family_of(req.kernel);
   if (!f || !f->plan_run) throw InputError("kernel " + req.kernel + " cannot be run on files");
   if (impl != "host") {

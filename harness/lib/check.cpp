@@ -48,6 +48,7 @@ uint32_t fnv(const std::string &s) {
 const char *failure_kind_name(Failure::Kind k) {
   switch (k) {
     case Failure::Mismatch: return "mismatch";
+    case Failure::ReturnValue: return "return value";
     case Failure::InputModified: return "input modified";
     case Failure::Guard: return "write outside buffer";
     case Failure::Abi: return "ABI violation";
@@ -158,7 +159,7 @@ void Checker::add(CheckCall call, Observer observer) {
 }
 
 void Checker::judge(const CheckCall &cc, uint32_t impl, const Call &call, const CallResult &r,
-                    const std::vector<std::vector<uint8_t>> &expected) {
+                    const std::vector<std::vector<uint8_t>> &expected, const HostBuffers &host) {
   auto &t = tally_[cc.kernel][impl_name(impl)];
   ++t.calls;
   auto fail = [&](Failure::Kind kind, const std::string &msg) {
@@ -175,6 +176,9 @@ void Checker::judge(const CheckCall &cc, uint32_t impl, const Call &call, const 
     fail(Failure::Other, describe_failure(call, r, target_.elf()));
   } else {
     if (r.abi_bad) fail(Failure::Abi, "did not preserve " + abi_names(r.abi_bad));
+    if (host.has_ret() && int32_t(r.ret) != host.ret())
+      fail(Failure::ReturnValue, "returned " + std::to_string(int32_t(r.ret)) + ", expected " +
+                                     std::to_string(host.ret()));
     for (const auto &g : r.guard_damage)
       fail(Failure::Guard, std::string("overwrite ") + (g.before ? "before" : "after") + " buffer '" +
                                call.bufs[g.buffer].name + "' at byte offset " + std::to_string(g.offset));
@@ -252,12 +256,10 @@ size_t Checker::flush() {
     const CheckCall &cc = pending_[p].call;
     std::vector<std::vector<uint8_t>> expected;
     for (const auto &b : cc.bufs) expected.push_back(b.data);
-    if (cc.host) {
-      HostBuffers hb(expected);
-      cc.host(hb);
-    }
+    HostBuffers hb(expected);
+    if (cc.host) cc.host(hb);
     for (; s < slots.size() && slots[s].pending == p; ++s) {
-      judge(cc, slots[s].impl, calls[s], results[s], expected);
+      judge(cc, slots[s].impl, calls[s], results[s], expected, hb);
       if (pending_[p].observer) pending_[p].observer(slots[s].impl, results[s]);
     }
   }

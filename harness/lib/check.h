@@ -44,9 +44,15 @@ class HostBuffers {
   int32_t *s32(int i) { return reinterpret_cast<int32_t *>(d_[i].data()); }
   uint32_t *u32(int i) { return reinterpret_cast<uint32_t *>(d_[i].data()); }
   template <class T> T *as(int i) { return reinterpret_cast<T *>(d_[i].data()); }
+  // The host reference's return value; when set, the firmware's R0 must equal it.
+  void set_ret(int32_t v) { ret_ = v, has_ret_ = true; }
+  bool has_ret() const { return has_ret_; }
+  int32_t ret() const { return ret_; }
 
  private:
   std::vector<std::vector<uint8_t>> &d_;
+  int32_t ret_ = 0;
+  bool has_ret_ = false;
 };
 
 struct CheckCall {
@@ -69,7 +75,7 @@ struct CheckCall {
 };
 
 struct Failure {
-  enum Kind { Mismatch, InputModified, Guard, Abi, Fault, Hang, Crash, Other };
+  enum Kind { Mismatch, ReturnValue, InputModified, Guard, Abi, Fault, Hang, Crash, Other };
   std::string kernel;
   std::string impl;
   std::string case_name;
@@ -121,7 +127,7 @@ class Checker {
  private:
   std::string resolve(const std::string &kernel) const;
   void judge(const CheckCall &cc, uint32_t impl, const Call &call, const CallResult &r,
-             const std::vector<std::vector<uint8_t>> &expected);
+             const std::vector<std::vector<uint8_t>> &expected, const HostBuffers &host);
 
   const Target &target_;
   CheckOptions opts_;
