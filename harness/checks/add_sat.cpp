@@ -26,7 +26,6 @@ CheckCall add_sat_call(int w, int h, int sstride, int dstride, std::vector<uint8
 void check(Checker &ck) {
   if (!ck.wants("add_sat_u8")) return;
   Rng &rng = ck.rng();
-  static const uint32_t places[] = {BVB_PLACE_SDRAM, BVB_PLACE_L1A, BVB_PLACE_L1B, BVB_PLACE_SCRATCH};
   for (Size s : check_sizes(1, 1, rng, ck.options().campaign)) {
     for (Pattern pa : all_patterns()) {
       const Pattern pb = all_patterns()[rng.uniform(0, int(all_patterns().size()) - 1)];
@@ -36,15 +35,9 @@ void check(Checker &ck) {
                          pattern_name(pb);
       CheckCall c = add_sat_call(s.w, s.h, ss, ds, make_plane(pa, s.w, s.h, ss, rng, ck.options().frames_real),
                                  make_plane(pb, s.w, s.h, ss, rng, ck.options().frames_real), name);
-      // Unaligned rows and every L1 bank, when they fit: the kernel has no alignment contract.
-      const uint32_t place = places[rng.uniform(0, 3)];
-      size_t total = 0;
-      for (auto &b : c.bufs) total += b.data.size() + 2 * b.guard + 8;
-      const size_t room = place == BVB_PLACE_SCRATCH ? 4096u : place == BVB_PLACE_L1B ? 24576u : 32768u;
-      for (auto &b : c.bufs) {
-        b.place = total <= room ? place : uint32_t(BVB_PLACE_SDRAM);
-        b.skew = uint32_t(rng.uniform(0, 3));
-      }
+      // Unaligned rows: the kernel has no alignment contract.
+      for (auto &b : c.bufs) b.skew = uint32_t(rng.uniform(0, 3));
+      ck.place_randomly(c);
       ck.add(std::move(c));
     }
   }

@@ -123,16 +123,12 @@ CheckCall blobs_call(std::vector<uint8_t> uyvy, int w, int h, int stride, const 
   return c;
 }
 
-void place_buffers(CheckCall &c, Rng &rng) {
-  static const uint32_t places[] = {BVB_PLACE_SDRAM, BVB_PLACE_L1A, BVB_PLACE_L1B, BVB_PLACE_SCRATCH};
-  const uint32_t place = places[rng.uniform(0, 3)];
-  size_t total = 0;
-  for (auto &b : c.bufs) total += b.data.size() + 2 * b.guard + 8;
-  const size_t room = place == BVB_PLACE_SCRATCH ? 4096u : place == BVB_PLACE_L1B ? 24576u : 32768u;
+// Skews each buffer as its element type allows, then places them all together.
+void place_buffers(Checker &ck, CheckCall &c, Rng &rng) {
   for (auto &b : c.bufs) {
-    b.place = total <= room ? place : uint32_t(BVB_PLACE_SDRAM);
     if (b.name == "uyvy") b.skew = uint32_t(rng.uniform(0, 3));  // byte data: no alignment needed
   }
+  ck.place_randomly(c);
 }
 
 // A colour crop of a real frame (RubberWhale or Dimetrodon, the colour frames of frames-real) as
@@ -221,7 +217,7 @@ void check(Checker &ck) {
                          std::to_string(prm.connectivity) + " max " + std::to_string(prm.max_blobs) + " min " +
                          std::to_string(prm.min_count) + " labels " + std::to_string(cap);
       CheckCall c = blobs_call(with_stride(packed, s.w, s.h, stride, rng), s.w, s.h, stride, prm, cap, name);
-      place_buffers(c, rng);
+      place_buffers(ck, c, rng);
       ck.add(std::move(c));
     }
   }

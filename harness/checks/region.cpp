@@ -20,18 +20,14 @@ template <class T> std::vector<uint8_t> bytes_of(const T &v) {
   return b;
 }
 
-void place_buffers(CheckCall &c, Rng &rng) {
-  static const uint32_t places[] = {BVB_PLACE_SDRAM, BVB_PLACE_L1A, BVB_PLACE_L1B, BVB_PLACE_SCRATCH};
-  const uint32_t place = places[rng.uniform(0, 3)];
-  size_t total = 0;
-  for (auto &b : c.bufs) total += b.data.size() + 2 * b.guard + 8;
-  const size_t room = place == BVB_PLACE_SCRATCH ? 4096u : place == BVB_PLACE_L1B ? 24576u : 32768u;
+// Skews each buffer as its element type allows, then places them all together.
+void place_buffers(Checker &ck, CheckCall &c, Rng &rng) {
   for (auto &b : c.bufs) {
-    b.place = total <= room ? place : uint32_t(BVB_PLACE_SDRAM);
     // Byte planes may start anywhere; int16/int32 data keeps its alignment.
     if (b.name == "img" || b.name == "mask") b.skew = uint32_t(rng.uniform(0, 3));
     if (b.name == "rows") b.skew = uint32_t(2 * rng.uniform(0, 1));
   }
+  ck.place_randomly(c);
 }
 
 // ---- region_grow ----
@@ -86,7 +82,7 @@ void check_grow(Checker &ck) {
                          std::to_string(cap);
       CheckCall c = grow_call(make_plane(pat, s.w, s.h, is, rng, ck.options().frames_real), s.w, s.h, is, ms,
                               prm, cap, name);
-      place_buffers(c, rng);
+      place_buffers(ck, c, rng);
       ck.add(std::move(c));
     }
   }
@@ -149,7 +145,7 @@ void check_free(Checker &ck) {
                          " " + pattern_name(pat) + (threshold ? " >=128" : " raw") + " min_gap " +
                          std::to_string(min_gap);
       CheckCall c = free_call(std::move(mask), s.w, s.h, ms, min_gap, name);
-      place_buffers(c, rng);
+      place_buffers(ck, c, rng);
       ck.add(std::move(c));
     }
   }

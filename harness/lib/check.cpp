@@ -153,6 +153,15 @@ bool Checker::wants(const std::string &kernel) const {
   return glob_match(opts_.kernel_glob, k) && target_.registry().find(k) != nullptr;
 }
 
+void Checker::place_randomly(CheckCall &call) {
+  static const uint32_t places[] = {BVB_PLACE_SDRAM, BVB_PLACE_L1A, BVB_PLACE_L1B, BVB_PLACE_SCRATCH};
+  const uint32_t place = places[rng_.uniform(0, 3)];
+  size_t total = 0;
+  for (const auto &b : call.bufs) total += b.data.size() + 2 * b.guard + b.align + b.skew;
+  const uint32_t chosen = total <= target_.arena_bytes(place) ? place : uint32_t(BVB_PLACE_SDRAM);
+  for (auto &b : call.bufs) b.place = chosen;
+}
+
 void Checker::add(CheckCall call, Observer observer) {
   call.kernel = resolve(call.kernel);
   pending_.push_back({std::move(call), std::move(observer)});

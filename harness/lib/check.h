@@ -114,6 +114,10 @@ class Checker {
   // Is this kernel selected by -k and present in the firmware?
   bool wants(const std::string &kernel) const;
 
+  // Puts all of the call's buffers together in one memory chosen at random (SDRAM, L1 bank A
+  // or B, scratchpad) among those they fit in, as firmware would for a working set that fits.
+  void place_randomly(CheckCall &call);
+
   // Queues the call on every implementation the firmware has (plus the host reference).
   void add(CheckCall call, Observer observer = {});
   // Runs everything queued; records failures. Returns the number of new failures.

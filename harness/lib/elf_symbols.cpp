@@ -72,13 +72,26 @@ std::vector<Symbol> load_symbols(const std::string &path) {
 
 }  // namespace
 
-std::string symbolize(const std::string &elf_path, uint32_t address) {
+const std::vector<Symbol> &symbols(const std::string &elf_path) {
   static std::mutex mu;
   static std::map<std::string, std::vector<Symbol>> cache;
   std::lock_guard<std::mutex> lock(mu);
   auto it = cache.find(elf_path);
   if (it == cache.end()) it = cache.emplace(elf_path, load_symbols(elf_path)).first;
-  const auto &syms = it->second;
+  return it->second;
+}
+
+bool symbol_value(const std::string &elf_path, const std::string &name, uint32_t *value) {
+  for (const auto &s : symbols(elf_path))
+    if (s.name == name) {
+      *value = s.value;
+      return true;
+    }
+  return false;
+}
+
+std::string symbolize(const std::string &elf_path, uint32_t address) {
+  const auto &syms = symbols(elf_path);
   auto up = std::upper_bound(syms.begin(), syms.end(), address,
                              [](uint32_t a, const Symbol &s) { return a < s.value; });
   if (up == syms.begin()) return "";

@@ -225,6 +225,18 @@ std::string make_temp_file() {
 Target::Target(FirmwareImage image, std::string simulator)
     : image_(std::move(image)), simulator_(std::move(simulator)) {}
 
+uint32_t Target::arena_bytes(uint32_t place) const {
+  static const char *names[][2] = {{"_sdram_arena_start", "_sdram_arena_end"},
+                                   {"_l1a_arena_start", "_l1a_arena_end"},
+                                   {"_l1b_arena_start", "_l1b_arena_end"},
+                                   {"_scratch_arena_start", "_scratch_arena_end"}};
+  if (place >= BVB_PLACE_WINDOW) return BVB_WINDOW_MAX;
+  uint32_t lo = 0, hi = 0;
+  if (!symbol_value(image_.elf, names[place][0], &lo) || !symbol_value(image_.elf, names[place][1], &hi))
+    throw sim::SetupError(image_.elf + ": no arena symbols (not a bfbench firmware image?)");
+  return hi > lo ? hi - lo : 0;
+}
+
 void Target::run_window(const std::vector<const Call *> &calls,
                         std::vector<CallResult *> &out) const {
   Layout l = lay_out(calls);

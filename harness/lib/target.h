@@ -100,6 +100,8 @@ class Target {
   const Registry &registry() const { return *image_.registry; }
   const std::string &elf() const { return image_.elf; }
   const std::string &simulator() const { return simulator_; }
+  // Bytes the firmware has for buffers placed in `place` (from the image's linker symbols).
+  uint32_t arena_bytes(uint32_t place) const;
   uint32_t null_call_cycles() const { return null_call_cycles_; }
   static constexpr uint32_t kDefaultCycleLimit = 300000000;
 
