@@ -189,15 +189,31 @@ _bvb_scanline_profile_u8_asm:
 
 
 /* S(t) for one shift: I0 -> p1[i0], I1 -> p2[i0 + t] (circular over each profile's words),
- * r4 = overlap n. Result in r5. Uses r0-r3, a0, a1, p0-p2, lc0. */
+ * r4 = overlap n, p2 = n >> 3. Result in r5. Uses r0-r3, a0, a1, p0, p1, lc0.
+ * The n mod 4 odd bytes are taken first, one by one; SAA does the rest. */
 .macro SAD_AT id
+	r5 = 0;
+	r2 = 3;
+	r2 = r2 & r4;
+	cc = r2 == 0;
+	if cc jump .Ls_body_\id;
 	p0 = i0;
 	p1 = i1;
+	lc0 = r2;
+	lsetup (.Lt0_\id, .Lt1_\id) lc0;
+.Lt0_\id:
+	r0 = b[p0++] (z);
+	r1 = b[p1++] (z);
+	r0 = r0 - r1 (ns);
+	r0 = abs r0;
+.Lt1_\id:
+	r5 = r5 + r0;
+	i0 = p0;
+	i1 = p1;
+.Ls_body_\id:
 	disalgnexcpt || r0 = [i0++] || r2 = [i1++];
 	disalgnexcpt || r1 = [i0++] || r3 = [i1++];
 	a1 = a0 = 0;
-	r5 = r4 >> 3;
-	p2 = r5;
 	cc = p2 == 0;
 	if cc jump .Ls_chunks_done_\id;
 	lsetup (.Ls0_\id, .Ls1_\id) lc0 = p2;
@@ -207,7 +223,7 @@ _bvb_scanline_profile_u8_asm:
 	saa (r1:0, r3:2) (r) || r1 = [i0++] || r3 = [i1++];
 .Ls_chunks_done_\id:
 	cc = bittst (r4, 2);
-	if !cc jump .Ls_no4_\id (bp);
+	if !cc jump .Ls_no4_\id;
 	saa (r1:0, r3:2);
 .Ls_no4_\id:
 	/* The four lanes are unsigned 16-bit sums: add them with the MACs. */
@@ -215,30 +231,16 @@ _bvb_scanline_profile_u8_asm:
 	r2 = 1;
 	a1 = r0.h * r2.l, a0 = r0.l * r2.l (fu);
 	a1 += r1.h * r2.l, a0 += r1.l * r2.l (fu);
-	r5 = (a0 += a1);
-	r2 = 3;
-	r2 = r2 & r4;
-	cc = r2 == 0;
-	if cc jump .Ls_done_\id (bp);
-	r3 = r4 - r2;
-	p2 = r3;
-	p0 = p0 + p2;
-	p1 = p1 + p2;
-	p2 = r2;
-	lsetup (.Lt0_\id, .Lt1_\id) lc0 = p2;
-.Lt0_\id:
-	r0 = b[p0++] (z);
-	r1 = b[p1++] (z);
-	r0 = r0 - r1;
-	r0 = abs r0;
-.Lt1_\id:
+	r0 = (a0 += a1);
 	r5 = r5 + r0;
-.Ls_done_\id:
 .endm
 
-/* The shift t (tie-break order already in place) is better than the best so far:
- * S * n_best < S_best * n. r5 = S, r4 = n, r6 = S_best, r7 = n_best, p3 = best t. */
-.macro KEEP_IF_BETTER treg
+/* Keep shift t if S * n_best < S_best * n (f(t) below the best so far). r5 = S, r4 = n,
+ * r6 = S_best, r7 = n_best, p3 = best t. The search runs outwards, so n <= n_best always:
+ * S >= S_best then already means f(t) >= f(best), without the products. */
+.macro KEEP_IF_BETTER treg, id
+	cc = r5 < r6 (iu);
+	if !cc jump .Lk_skip_\id (bp);
 	r0 = r5;
 	r0 *= r7;
 	r1 = r6;
@@ -247,6 +249,7 @@ _bvb_scanline_profile_u8_asm:
 	if cc r6 = r5;
 	if cc r7 = r4;
 	if cc p3 = \treg;
+.Lk_skip_\id:
 .endm
 
 /* void bvb_scanline_shift_u8_asm(p1, p2, w, rho, result, curve) */
@@ -286,7 +289,9 @@ _bvb_scanline_shift_u8_asm:
 	i3 = r0;
 .Lsh_zero:
 	/* t = 0 is the first best. */
-	r4 = m2;
+	r4 = m2;			/* n = w - k, k = 0 */
+	r0 = r4 >> 3;
+	p2 = r0;
 	i0 = m0;
 	i1 = m1;
 	SAD_AT z
@@ -305,26 +310,24 @@ _bvb_scanline_shift_u8_asm:
 .Lsh_k:
 	p4 += 1;
 	p5 += -1;
+	r4 += -1;			/* n = w - k for both shifts */
+	r0 = r4 >> 3;
+	p2 = r0;
+	m2 = p4;
 	/* t = -k: p1[k..w) against p2[0..w-k). */
-	r4 = m2;
-	r0 = p4;
-	r4 = r4 - r0;			/* n = w - k */
-	r1 = m0;
-	r1 = r1 + r0;
-	i0 = r1;
+	i0 = m0;
+	i0 += m2;
 	i1 = m1;
 	SAD_AT n
 	[i2--] = r5;
-	KEEP_IF_BETTER p5
+	KEEP_IF_BETTER p5, n
 	/* t = +k: p1[0..w-k) against p2[k..w). */
-	r0 = p4;
-	r1 = m1;
-	r1 = r1 + r0;
-	i1 = r1;
 	i0 = m0;
+	i1 = m1;
+	i1 += m2;
 	SAD_AT p
 	[i3++] = r5;
-	KEEP_IF_BETTER p4
+	KEEP_IF_BETTER p4, p
 .Lsh_k_end:
 	nop;
 .Lsh_done:
