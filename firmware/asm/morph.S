@@ -14,12 +14,14 @@
  * shift to bring the second pixel's lane down, two byte stores (so the destination needs no
  * alignment either): 3 ops per 2 pixels.
  *
- * Lower bound: 3.25 cycles per pixel for this data layout (1.75 + 1.5 above: one ALU/video op
- * per issue, every load and store in a parallel slot). Measured (bfbench bench):
- *   erode  160x120: C 4,541,631, asm 70,923 (64x); 320x240: 18,223,251 / 267,843 (68x);
- *          640x480: 73,016,451 / 1,040,643 (70x)
- *   (dilate: identical counts.) The difference from the bound is per row: set-up of the two
- * passes, the right-edge fix-up and two subroutine calls, about 60 cycles a row.
+ * Lower bound: 3.25 cycles per pixel for this method (1.75 + 1.5 above: one ALU/video op per
+ * issue, every load and store in a parallel slot). Measured (bfbench bench; erosion and dilation
+ * take the same cycles):
+ *   160x120: C 1,032,814, asm 72,417 (14.3x, 3.77 per pixel);
+ *   320x240: C 4,120,779, asm 269,577 (15.3x, 3.51);
+ *   640x480: C 16,460,934, asm 1,038,297 (15.9x, 3.38).
+ * The difference from the bound is per row, about 80 cycles: set-up of the two passes (the
+ * circular buffer over the source row), the right-edge fix-up, two subroutine calls.
  *
  * Source rows are read only within the aligned words that hold their bytes: I0 runs as a
  * circular buffer over exactly those words, so the pass's read-ahead wraps instead of running
