@@ -2,11 +2,14 @@
 // direct computations (exact rationals for f(t)).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "bvb/scanline.h"
 #include "check.h"
+#include "scene/scene_io.h"
 
 namespace {
 
@@ -116,6 +119,37 @@ TEST(ScanlineShift, CurveAndMinimumMatchDirectComputation) {
     ASSERT_EQ(uint64_t(r.s), bs);
     ASSERT_EQ(uint64_t(r.n), bn);
   }
+}
+
+TEST(ScanlineShift, FollowsTheRobotTurningInARenderedScene) {
+  // frames/scenes/boxes_turn: the robot turns 3 degrees right per frame. A yaw by a moves the
+  // image centre sideways by fx * tan(a) * cos(tilt) pixels; the seed's setting (88-pixel
+  // windows, overlap 40) on a band of the middle rows should find that to the nearest pixel.
+  const bvb::SceneData d = bvb::read_scene(std::string(BVB_SOURCE_DIR) + "/frames/scenes/boxes_turn");
+  const int w = d.camera.width, h = d.camera.height, rows = h / 2, y0 = (h - rows) / 2;
+  const int win = 88, x0 = (w - win) / 2;
+  auto profile = [&](int k) {
+    const bvb::Image img = d.grey(k);
+    std::vector<uint8_t> p(w);
+    bvb_scanline_profile_u8_c(&img.data[size_t(y0) * w], w, rows, w, p.data(), nullptr);
+    return p;
+  };
+  const double kPi = 3.14159265358979323846;
+  int turns = 0;
+  std::vector<uint8_t> prev = profile(0);
+  for (int k = 1; k < d.frames; ++k) {
+    std::vector<uint8_t> cur = profile(k);
+    const double turn = d.truth[k].step.turn_deg;
+    if (turn != 0) {
+      const double want = d.camera.fx * std::tan(turn * kPi / 180) * std::cos(d.camera.tilt_deg * kPi / 180);
+      int32_t res[3];
+      bvb_scanline_shift_u8_c(&prev[x0], &cur[x0], win, 40, res, nullptr);
+      EXPECT_LE(std::fabs(res[0] - want), 1.0) << "frames " << k - 1 << " -> " << k << ": want " << want;
+      ++turns;
+    }
+    prev = cur;
+  }
+  EXPECT_GT(turns, 10);
 }
 
 }  // namespace
