@@ -27,8 +27,8 @@
  *     160x120: C 59,566, asm 5,478 (10.9x); 320x240: C 176,686, asm 18,058 (9.8x);
  *     640x480: C 583,726, asm 64,818 (9.0x); bound 4,000 / 15,200 / 59,200.
  *   shift, window = image width, rho = width / 2 (161, 321, 641 shifts):
- *     160x120: C 105,375, asm 13,036 (8.1x); 320x240: C 402,634, asm 35,428 (11.4x);
- *     640x480: C 1,573,222, asm 109,172 (14.4x); bound 4,820 / 19,240 / 76,880 (SAA rate);
+ *     160x120: C 105,375, asm 13,056 (8.1x); 320x240: C 402,634, asm 35,448 (11.4x);
+ *     640x480: C 1,573,222, asm 109,192 (14.4x); bound 4,820 / 19,240 / 76,880 (SAA rate);
  *     about 50 cycles a shift go to set-up, the 0..3 odd bytes, the lane sum and the
  *     comparison.
  * Both kernels read their inputs only within the words that hold them (circular buffers over
@@ -244,6 +244,23 @@ _bvb_scanline_profile_u8_asm:
 	r5 = r5 + r0;
 .endm
 
+/* S(t) when the overlap n = r4 is below 4: byte by byte (SAA's read-ahead would touch the
+ * word past a profile). */
+.macro SAD_SMALL id
+	r5 = 0;
+	p0 = i0;
+	p1 = i1;
+	lc0 = r4;
+	lsetup (.Lu0_\id, .Lu1_\id) lc0;
+.Lu0_\id:
+	r0 = b[p0++] (z);
+	r1 = b[p1++] (z);
+	r0 = r0 - r1 (ns);
+	r0 = abs r0;
+.Lu1_\id:
+	r5 = r5 + r0;
+.endm
+
 /* Keep shift t if S * n_best < S_best * n (f(t) below the best so far). r5 = S, r4 = n,
  * r6 = S_best, r7 = n_best, p3 = best t. The search runs outwards, so n <= n_best always:
  * S >= S_best then already means f(t) >= f(best), without the products. */
@@ -259,6 +276,30 @@ _bvb_scanline_profile_u8_asm:
 	if cc r7 = r4;
 	if cc p3 = \treg;
 .Lk_skip_\id:
+.endm
+
+/* Shifts -k and +k (k = p4 after the increments), by the given S(t) macro. */
+.macro KBODY sad, id
+	p4 += 1;
+	p5 += -1;
+	r4 += -1;			/* n = w - k for both shifts */
+	r0 = r4 >> 3;
+	p2 = r0;
+	m2 = p4;
+	/* t = -k: p1[k..w) against p2[0..w-k). */
+	i0 = m0;
+	i0 += m2;
+	i1 = m1;
+	\sad n\id
+	[i2--] = r5;
+	KEEP_IF_BETTER p5, n\id
+	/* t = +k: p1[0..w-k) against p2[k..w). */
+	i0 = m0;
+	i1 = m1;
+	i1 += m2;
+	\sad p\id
+	[i3++] = r5;
+	KEEP_IF_BETTER p4, p\id
 .endm
 
 /* void bvb_scanline_shift_u8_asm(p1, p2, w, rho, result, curve) */
@@ -303,7 +344,13 @@ _bvb_scanline_shift_u8_asm:
 	p2 = r0;
 	i0 = m0;
 	i1 = m1;
+	cc = r4 <= 3;
+	if !cc jump .Lsh_zero_big (bp);
+	SAD_SMALL z
+	jump.s .Lsh_zero_done;
+.Lsh_zero_big:
 	SAD_AT z
+.Lsh_zero_done:
 	r6 = r5;
 	r7 = r4;
 	p3 = 0;
@@ -311,33 +358,32 @@ _bvb_scanline_shift_u8_asm:
 	i3 += 4;
 	p4 = 0;				/* k */
 	p5 = 0;				/* -k */
-	r0 = m3;
-	cc = r0 == 0;
-	if cc jump .Lsh_done;
-	p0 = r0;
+	/* k = 1..K1 have overlaps of 4 or more (SAA), the rest (when rho < 4) are byte by byte. */
+	r0 = m3;			/* T */
+	r1 = r4;
+	r1 += -4;
+	r2 = 0;
+	r1 = max (r1, r2);
+	r1 = min (r1, r0);		/* K1 = min(T, max(w - 4, 0)) */
+	r0 = r0 - r1;
+	m3 = r0;			/* K2 = T - K1 */
+	cc = r1 == 0;
+	if cc jump .Lsh_small;
+	p0 = r1;
 	lsetup (.Lsh_k, .Lsh_k_end) lc1 = p0;
 .Lsh_k:
-	p4 += 1;
-	p5 += -1;
-	r4 += -1;			/* n = w - k for both shifts */
-	r0 = r4 >> 3;
-	p2 = r0;
-	m2 = p4;
-	/* t = -k: p1[k..w) against p2[0..w-k). */
-	i0 = m0;
-	i0 += m2;
-	i1 = m1;
-	SAD_AT n
-	[i2--] = r5;
-	KEEP_IF_BETTER p5, n
-	/* t = +k: p1[0..w-k) against p2[k..w). */
-	i0 = m0;
-	i1 = m1;
-	i1 += m2;
-	SAD_AT p
-	[i3++] = r5;
-	KEEP_IF_BETTER p4, p
+	KBODY SAD_AT, k
 .Lsh_k_end:
+	nop;
+.Lsh_small:
+	r0 = m3;
+	cc = r0 == 0;
+	if cc jump .Lsh_done (bp);
+	p0 = r0;
+	lsetup (.Lsh_s, .Lsh_s_end) lc1 = p0;
+.Lsh_s:
+	KBODY SAD_SMALL, s
+.Lsh_s_end:
 	nop;
 .Lsh_done:
 	r0 = [sp + 48];			/* result */
