@@ -72,6 +72,16 @@ TEST(ScanlineShift, FindsAKnownShift) {
   }
 }
 
+TEST(ScanlineShift, TheHeadersWorkedExample) {
+  // bvb/scanline.h: w = 6, rho = 4, p2 = p1 moved right by one pixel.
+  std::vector<uint32_t> curve;
+  const Shift r = shift_of({10, 20, 30, 40, 50, 60}, {10, 10, 20, 30, 40, 50}, 4, &curve);
+  EXPECT_EQ(curve, (std::vector<uint32_t>{110, 90, 50, 0, 40}));
+  EXPECT_EQ(r.t, 1);
+  EXPECT_EQ(r.s, 0);
+  EXPECT_EQ(r.n, 5);
+}
+
 TEST(ScanlineShift, TiesGoToTheSmallestShiftThenTheNegativeOne) {
   // Period 2: t = 0 and every even shift match perfectly; 0 is the smallest.
   std::vector<uint8_t> a = {0, 9, 0, 9, 0, 9, 0, 9};

@@ -22,10 +22,16 @@
  *    So w is the length of the compared window (not a half-width): with windows of w pixels
  *    the overlap at shift t is w - |t|, and "minimum overlap rho" is exactly |t| <= w - rho.
  *    The seed's setting, w = 88 and rho = 40, compares 88-pixel windows over shifts -48..48.
- *    Worked example, w = 6, rho = 4 (T = 2):
- *      t = -2: i = 2..5 against p2[0..3];  t = 0: i = 0..5 against p2[0..5];
- *      t = +1: i = 0..4 against p2[1..5];  |O| = 4, 5, 6, 5, 4 for t = -2..2.
- *    p2 is p1 moved right by d pixels (p2[x] = p1[x - d]) -> S(d) = 0 -> the shift found is d.
+ *    Worked example, w = 6, rho = 4 (T = 2), p1 = 10 20 30 40 50 60 and p2 = 10 10 20 30 40 50
+ *    (p1 moved right by one pixel, the edge repeated):
+ *      t = -2: p1[2..5] against p2[0..3], S = 20 + 30 + 30 + 30 = 110, |O| = 4, f = 27.5
+ *      t = -1: p1[1..5] against p2[0..4], S = 10 + 20 + 20 + 20 + 20 = 90, |O| = 5, f = 18
+ *      t =  0: p1[0..5] against p2[0..5], S = 0 + 10 + 10 + 10 + 10 + 10 = 50, |O| = 6
+ *      t = +1: p1[0..4] against p2[1..5], S = 0, |O| = 5, f = 0     <- the shift found
+ *      t = +2: p1[0..3] against p2[2..5], S = 10 + 10 + 10 + 10 = 40, |O| = 4, f = 10
+ *    so result = {1, 0, 5} and curve = {110, 90, 50, 0, 40}. In general p2 = p1 moved right by
+ *    d pixels (p2[x] = p1[x - d]) gives S(d) = 0 and the shift d: t > 0 when the scene moved
+ *    right between the frames of p1 and p2, i.e. when the robot turned left.
  *    The shift found minimises f. f is compared exactly, never divided: f(a) < f(b) when
  *    S(a) * (w - |b|) < S(b) * (w - |a|), products below 2^28. Ties go to the smallest |t|,
  *    then to the negative t (the search visits 0, -1, +1, -2, +2, ... and keeps the first
