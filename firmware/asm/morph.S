@@ -1,8 +1,9 @@
 /* 3x3 erosion (min) and dilation (max), replicated borders (bvb/morph.h).
  *
- * Separable: a 3x1 pass over each source row once (H, 16-bit lanes, kept for three rows in the
- * caller's scratch), then a 1x3 pass over three H rows per output row. Pixels travel as 16-bit
- * halfwords, two per register, because the Blackfin's vector MIN/MAX work on halfword pairs.
+ * Separable: a 3x1 pass over each source row once (H, 16-bit lanes, kept for four rows in the
+ * caller's scratch), then a 1x3 pass over four H rows for each pair of output rows. Pixels
+ * travel as 16-bit halfwords, two per register, because the Blackfin's vector MIN/MAX work on
+ * halfword pairs.
  *
  * Horizontal pass, per four pixels x..x+3: one source word is loaded (through I0, whose low bits
  * carry the row's misalignment: BYTEUNPACK picks the four pixels out of the last two words
@@ -10,26 +11,29 @@
  * words and a second BYTEUNPACK give the window one pixel to the right, [x+1, x+2] [x+3, x+4];
  * the left neighbours [x-1, x] are the previous group's right window. Four vector MIN (MAX)
  * finish the group: 7 ops per 4 pixels, and the two H stores ride in parallel slots.
- * Vertical pass, per two pixels: two vector MIN of three H words (loaded two per issue), one
- * shift to bring the second pixel's lane down, two byte stores (so the destination needs no
- * alignment either): 3 ops per 2 pixels.
+ * Vertical pass, per two pixels of two output rows y, y+1: the min of H rows y and y+1 is
+ * shared, one more MIN with row y-1 and one with row y+2 give both outputs (four H words
+ * loaded, two per issue), one shift per output row brings its second pixel's lane down, four
+ * byte stores (so the destination needs no alignment either): 5 ops per 2 x 2 pixels.
  *
- * Lower bound: 3.25 cycles per pixel for this method (1.75 + 1.5 above: one ALU/video op per
+ * Lower bound: 3.0 cycles per pixel for this method (1.75 + 1.25 above: one ALU/video op per
  * issue, every load and store in a parallel slot). Measured (bfbench bench; erosion and dilation
  * take the same cycles):
- *   160x120: C 1,032,814, asm 72,417 (14.3x, 3.77 per pixel);
- *   320x240: C 4,120,779, asm 269,577 (15.3x, 3.51);
- *   640x480: C 16,460,934, asm 1,038,297 (15.9x, 3.38).
- * The difference from the bound is per row, about 80 cycles: set-up of the two passes (the
- * circular buffer over the source row), the right-edge fix-up, two subroutine calls.
+ *   160x120: C 1,032,814, asm 66,132 (15.6x, 3.44 per pixel);
+ *   320x240: C 4,120,779, asm 247,392 (16.7x, 3.22);
+ *   640x480: C 16,460,934, asm 955,512 (17.2x, 3.11).
+ * The difference from the bound is per row, about 70 cycles: set-up of the horizontal pass
+ * (the circular buffer over the source row), the right-edge fix-up, the calls, and per pair of
+ * rows the vertical pass's set-up and the rotation of the four H rows.
  *
  * Source rows are read only within the aligned words that hold their bytes: I0 runs as a
  * circular buffer over exactly those words, so the pass's read-ahead wraps instead of running
  * past the row. The rightmost pixel's horizontal result, whose right neighbour is outside the
  * row, is recomputed afterwards from the last two pixels (replicated edge); the leftmost one
- * starts from [x0, x0] as its left neighbours.
+ * starts from [x0, x0] as its left neighbours. The top output row takes H(0) as its row above,
+ * the bottom one H(h-1) as its row below.
  *
- * Working set: scratch, 3 rows of 8 * ceil(w / 8) + 8 halfwords (3.9 KB at 640 wide): L1 on
+ * Working set: scratch, 4 rows of 8 * ceil(w / 8) + 8 halfwords (5.2 KB at 640 wide): L1 on
  * hardware. */
 
 /* Arguments after the prologue's pushes (7 registers and RETS, 32 bytes). */
@@ -58,10 +62,13 @@
 	p3 = r3;			/* horizontal pass: pairs of 4-pixel groups */
 	r3 <<= 4;
 	r3 += 16;			/* bytes per H row */
+	/* Four H rows: (b1, b2, b3, m3) = rows (y - 1, y, y + 1, y + 2) of the output pair y, y + 1. */
 	r0 = [sp + A_SCRATCH];
-	b2 = r0;			/* H of row y (after the first row's rotation: row y - 1) */
+	b2 = r0;
 	r0 = r0 + r3;
 	b3 = r0;
+	r0 = r0 + r3;
+	m3 = r0;
 	r0 = r0 + r3;
 	b1 = r0;
 	r0 = [sp + A_SSTRIDE];
@@ -70,13 +77,12 @@
 	r7 = [sp + A_HEIGHT];
 	[--sp] = r7;			/* rows, kept on the stack: every data register is busy */
 
-	/* Row 0: H(0) into b2; a one-row image is H(0) three times. */
 	i1 = b2;
-	call .Lh_\@;
+	call .Lh_\@;			/* H(0) */
 	r7 = [sp];
 	cc = r7 == 1;
 	if !cc jump .Lmore_\@ (bp);
-	i0 = b2;
+	i0 = b2;			/* one row: H(0) three times */
 	i1 = b2;
 	i2 = b2;
 	call .Lv_\@;
@@ -85,38 +91,77 @@
 	i3 += m2;
 	i1 = b3;
 	call .Lh_\@;			/* H(1) */
-	i0 = b2;
+	r7 = [sp];
+	cc = r7 == 2;
+	if !cc jump .Lmore3_\@ (bp);
+	i0 = b2;			/* two rows: H(0), H(0), H(1), H(1) */
 	i1 = b2;
 	i2 = b3;
-	call .Lv_\@;			/* output row 0: H(0), H(0), H(1) */
+	p2 = b3;
+	call .Lv2_\@;
+	jump .Ldone_\@;
+.Lmore3_\@:
+	i3 += m2;
+	i1 = m3;
+	call .Lh_\@;			/* H(2) */
+	i0 = b2;			/* rows 0 and 1: H(0), H(0), H(1), H(2) */
+	i1 = b2;
+	i2 = b3;
+	p2 = m3;
+	call .Lv2_\@;
+	p4 = p4 + p5;			/* next pair: rotate the H rows by two */
 	p4 = p4 + p5;
-	/* (b1, b2, b3) = H of rows (y - 1, y, y + 1): rotate so that y = 1. */
 	p0 = b1;
-	b1 = b2;
-	b2 = b3;
+	b1 = b3;
 	b3 = p0;
+	p0 = b2;
+	b2 = m3;
+	m3 = p0;
+	/* Then pairs y, y + 1 while y + 2 is a row: (h - 2 - 1) / 2 of them. */
 	r7 = [sp];
-	r7 += -2;
-	cc = r7 <= 0;
-	if cc jump .Llast_\@;
+	r7 += -3;
+	r7 >>= 1;
+	cc = r7 == 0;
+	if cc jump .Lpairs_done_\@;
 	p0 = r7;
-	lsetup (.Lrow_\@, .Lrow_end_\@) lc1 = p0;
-.Lrow_\@:
+	lsetup (.Lpair_\@, .Lpair_end_\@) lc1 = p0;
+.Lpair_\@:
 	i3 += m2;
 	i1 = b3;
 	call .Lh_\@;			/* H(y + 1) */
+	i3 += m2;
+	i1 = m3;
+	call .Lh_\@;			/* H(y + 2) */
 	i0 = b1;
 	i1 = b2;
 	i2 = b3;
-	call .Lv_\@;
+	p2 = m3;
+	call .Lv2_\@;
+	p4 = p4 + p5;
 	p4 = p4 + p5;
 	p0 = b1;
-	b1 = b2;
-	b2 = b3;
-.Lrow_end_\@:
+	b1 = b3;
 	b3 = p0;
-.Llast_\@:
-	i0 = b1;			/* the last row: H(h - 2), H(h - 1), H(h - 1) */
+	p0 = b2;
+	b2 = m3;
+.Lpair_end_\@:
+	m3 = p0;
+.Lpairs_done_\@:
+	/* One or two rows left: h - 2 - 2 * pairs. */
+	r7 = [sp];
+	cc = bittst (r7, 0);
+	if cc jump .Lone_left_\@;
+	i3 += m2;			/* two: the second one's row below is itself */
+	i1 = b3;
+	call .Lh_\@;			/* H(h - 1) */
+	i0 = b1;
+	i1 = b2;
+	i2 = b3;
+	p2 = b3;
+	call .Lv2_\@;
+	jump .Ldone_\@;
+.Lone_left_\@:
+	i0 = b1;			/* one: H(h - 2), H(h - 1), H(h - 1) */
 	i1 = b2;
 	i2 = b2;
 	call .Lv_\@;
@@ -124,6 +169,39 @@
 	sp += 4;
 	rets = [sp++];
 	(r7:4, p5:3) = [sp++];
+	rts;
+
+	/* Vertical pass for two output rows: H rows I0, I1, I2, P2 (y - 1 .. y + 2) into the
+	 * destination rows P4 and P4 + P5. The two middle rows' min is shared. */
+.Lv2_\@:
+	b0 = i3;			/* the source row pointer, back at the end */
+	i3 = p2;
+	p1 = p4;
+	p0 = p4 + p5;
+	p2 = m0;
+	r0 = [i0++] || r1 = [i1++];
+	r2 = [i2++] || r3 = [i3++];
+	r4 = \op (r1, r2) (v) || r1 = [i1++];
+	cc = p2 == 0;
+	if cc jump .Lv2odd_\@;
+	lsetup (.Lw0_\@, .Lw4_\@) lc0 = p2;
+.Lw0_\@:
+	r5 = \op (r4, r0) (v) || r0 = [i0++] || r2 = [i2++];
+	r6 = \op (r4, r3) (v) || b[p1++] = r5 || r3 = [i3++];
+	r7 = r5 >> 16 || b[p0++] = r6;
+	r5 = r6 >> 16 || b[p1++] = r7;
+.Lw4_\@:
+	r4 = \op (r1, r2) (v) || b[p0++] = r5 || r1 = [i1++];
+.Lv2odd_\@:
+	r7 = m1;
+	cc = bittst (r7, 0);
+	if !cc jump .Lv2end_\@ (bp);
+	r5 = \op (r4, r0) (v);
+	r6 = \op (r4, r3) (v);
+	b[p1++] = r5;
+	b[p0++] = r6;
+.Lv2end_\@:
+	i3 = b0;
 	rts;
 
 	/* Horizontal pass: source row I3 (width M1), into the H row at I1; P3 pairs of groups. */

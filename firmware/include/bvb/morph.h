@@ -17,17 +17,17 @@
  * width, height >= 1; strides >= width; no alignment required of src, dst or the strides.
  * src and dst must not overlap.
  *
- * scratch: working memory for the assembly (three rows of 16-bit horizontal results), at least
+ * scratch: working memory for the assembly (four rows of 16-bit horizontal results), at least
  * BVB_MORPH3X3_SCRATCH_BYTES(width) bytes, 4-byte aligned. The C reference does not use it; the
- * assembly overwrites it. Placing it in L1 (3.9 KB for a 640-pixel row) is what makes the
+ * assembly overwrites it. Placing it in L1 (5.2 KB for a 640-pixel row) is what makes the
  * assembly fast on hardware; the simulator's counts do not depend on it. */
 #ifndef BVB_MORPH_H
 #define BVB_MORPH_H
 
 #include <stdint.h>
 
-/* Three rows of 8 * ceil(width / 8) + 8 halfwords. */
-#define BVB_MORPH3X3_SCRATCH_BYTES(width) (3 * 2 * (8 * (((width) + 7) / 8) + 8))
+/* Four rows of 8 * ceil(width / 8) + 8 halfwords. */
+#define BVB_MORPH3X3_SCRATCH_BYTES(width) (4 * 2 * (8 * (((width) + 7) / 8) + 8))
 
 #ifdef __cplusplus
 extern "C" {
