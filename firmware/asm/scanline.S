@@ -1,0 +1,402 @@
+/* Scan-line profiles and their shift (bvb/scanline.h).
+ *
+ * scanline_profile_u8: column sums, two rows per pass, then one normalising pass.
+ *   Sum pass, per 4 columns of 2 rows: BYTEOP16P adds the 4 bytes of each row into 4 16-bit
+ *   sums (the two row words loaded in parallel, through I0 and I1, whose low bits carry each
+ *   row's misalignment); two vector adds fold them into the 16-bit column sums in scratch,
+ *   loaded and stored in the parallel slots. 3 ops per 8 pixels: 0.375 cycles per pixel.
+ *   The first pass adds to a constant word holding rows / 2 in both halves (the rounding
+ *   term), an odd row is paired with a word of zeros: I2 and I1 run as 4-byte circular
+ *   buffers over those words, so every pass is the same loop.
+ *   Normalising pass, per 2 columns: profile = floor((S + rows / 2) * R / 2^24) with
+ *   R = ceil(2^24 / rows) (a table built by the assembler), split as R = Rh * 256 + Rl:
+ *   A = S * Rl (dual MAC), A >>= 8 (twice), A += S * Rh with truncating extraction of bits
+ *   16..31 (exact: the bits dropped by the shift cannot reach bit 24), one shift to bring
+ *   the second column down, two byte stores: 5 ops per 2 columns.
+ *   Lower bound: 0.375 cycles per pixel of the band plus 2.5 per column.
+ *
+ * scanline_shift_u8: for each shift, SAA accumulates |p1[i] - p2[i + t]| four bytes per
+ *   cycle into the accumulators' four 16-bit lanes (two loads per cycle, misalignment of
+ *   either profile absorbed through I0 and I1) after the overlap's first n mod 4 bytes have
+ *   been taken one by one; a lone last 4-byte chunk gets one more SAA, the lanes are summed
+ *   as unsigned halves with the MACs, and S(t) is compared with the best by
+ *   cross-multiplication. Lower bound: (w - |t|) / 4 cycles per shift, the SAA rate.
+ *
+ * Measured (bfbench bench):
+ *   profile, band of h / 2 rows (60, 120, 240):
+ *     160x120: C 59,566, asm 5,478 (10.9x); 320x240: C 176,686, asm 18,058 (9.8x);
+ *     640x480: C 583,726, asm 64,818 (9.0x); bound 4,000 / 15,200 / 59,200.
+ *   shift, window = image width, rho = width / 2 (161, 321, 641 shifts):
+ *     160x120: C 105,375, asm 13,056 (8.1x); 320x240: C 402,634, asm 35,448 (11.4x);
+ *     640x480: C 1,573,222, asm 109,192 (14.4x); bound 4,820 / 19,240 / 76,880 (SAA rate);
+ *     about 50 cycles a shift go to set-up, the 0..3 odd bytes, the lane sum and the
+ *     comparison.
+ * Both kernels read their inputs only within the words that hold them (circular buffers over
+ * each row or profile). Working set: the profile's 16-bit column sums (scratch, 1.3 KB at 640
+ * wide; L1 on hardware); the shift search keeps everything in registers. */
+
+	.section .rodata
+	.align 4
+/* ceil(2^24 / rows) for rows = 1..256. */
+.Lrecip:
+	.set .Ln, 1
+	.rept 256
+	.long ((1 << 24) + .Ln - 1) / .Ln
+	.set .Ln, .Ln + 1
+	.endr
+
+	.section .l1.text, "ax"
+
+/* Circular buffer over the words holding bytes [ireg, ireg + len): base and length. */
+.macro CIRC ireg, breg, lreg, len
+	r0 = \ireg;
+	r1 = \len;
+	r2 = r0 + r1;
+	r2 += -1;
+	r3 = -4;
+	r2 = r2 & r3;
+	r3 = r0 & r3;
+	r2 = r2 - r3;
+	r2 += 4;
+	\breg = r3;
+	\lreg = r2;
+.endm
+
+/* void bvb_scanline_profile_u8_asm(src, width, rows, stride, profile, scratch) */
+	.align 4
+	.global _bvb_scanline_profile_u8_asm
+	.type _bvb_scanline_profile_u8_asm, STT_FUNC
+_bvb_scanline_profile_u8_asm:
+	[--sp] = (r7:4, p5:3);
+	[--sp] = rets;
+	p5 = r0;			/* next source row */
+	m1 = r1;			/* width */
+	m2 = r2;			/* rows */
+	r3 = r1;
+	r3 += 7;
+	r3 >>= 3;
+	p3 = r3;			/* iterations of the sum pass: 8 columns each */
+	r3 = r2 >> 1;			/* rows / 2 in both halves: the first pass's addend */
+	r4 = r3 << 16;
+	r3 = r3 | r4;
+	r4 = 0;
+	[--sp] = r3;
+	[--sp] = r4;			/* [sp]: zero word, [sp + 4]: rows / 2 word */
+	p4 = [sp + 52];			/* stride */
+	r0 = [sp + 60];			/* scratch */
+	m0 = r0;
+	/* The first pass reads the rows / 2 word instead of column sums. */
+	r1 = sp;
+	r1 += 4;
+	i2 = r1;
+	b2 = r1;
+	l2 = 4;
+	r0 = m2;
+	cc = bittst (r0, 0);
+	if !cc jump .Lp_pairs (bp);
+	/* An odd row on its own, against zeros. */
+	i0 = p5;
+	CIRC i0, b0, l0, m1
+	r0 = sp;
+	i1 = r0;
+	b1 = r0;
+	l1 = 4;
+	i3 = m0;
+	call .Lp_pass;
+	p5 = p5 + p4;
+	r0 = m0;
+	r0 += 4;
+	i2 = r0;
+	l2 = 0;
+.Lp_pairs:
+	r0 = m2;
+	r0 >>= 1;
+	cc = r0 == 0;
+	if cc jump .Lp_norm;
+	p0 = r0;
+	lsetup (.Lp_row, .Lp_row_end) lc1 = p0;
+.Lp_row:
+	i0 = p5;
+	CIRC i0, b0, l0, m1
+	p5 = p5 + p4;
+	i1 = p5;
+	CIRC i1, b1, l1, m1
+	p5 = p5 + p4;
+	i3 = m0;
+	call .Lp_pass;
+	r0 = m0;
+	r0 += 4;
+	i2 = r0;
+.Lp_row_end:
+	l2 = 0;
+.Lp_norm:
+	l0 = 0;
+	l1 = 0;
+	/* R = ceil(2^24 / rows) = Rh * 256 + Rl, Rh at most 0xffff, into r7 = Rh:Rl. */
+	p0.l = .Lrecip;
+	p0.h = .Lrecip;
+	r0 = m2;
+	r0 += -1;
+	r0 <<= 2;
+	p1 = r0;
+	p0 = p0 + p1;
+	r0 = [p0];
+	r1 = r0 >> 8;
+	r2.l = 0xffff;
+	r2.h = 0;
+	r1 = min (r1, r2);
+	r2 = r1 << 8;
+	r2 = r0 - r2;
+	r7 = pack (r1.l, r2.l);
+	p1 = [sp + 56];			/* profile */
+	r0 = m0;
+	r0 += 4;
+	i2 = r0;
+	r0 = m1;
+	r0 >>= 1;
+	p2 = r0;			/* column pairs */
+	r0 = [i2++];
+	a1 = r0.h * r7.l, a0 = r0.l * r7.l (fu);
+	cc = p2 == 0;
+	if cc jump .Lp_odd;
+	lsetup (.Ln0, .Ln1) lc0 = p2;
+.Ln0:	a0 = a0 >> 8;
+	a1 = a1 >> 8;
+	r2.h = (a1 += r0.h * r7.h), r2.l = (a0 += r0.l * r7.h) (tfu) || r0 = [i2++];
+	r3 = r2 >> 16 || b[p1++] = r2;
+.Ln1:	a1 = r0.h * r7.l, a0 = r0.l * r7.l (fu) || b[p1++] = r3;
+.Lp_odd:
+	r1 = m1;
+	cc = bittst (r1, 0);
+	if !cc jump .Lp_done (bp);
+	a0 = a0 >> 8;
+	r2.l = (a0 += r0.l * r7.h) (tfu);
+	b[p1++] = r2;
+.Lp_done:
+	sp += 8;
+	rets = [sp++];
+	(r7:4, p5:3) = [sp++];
+	rts;
+
+	/* One sum pass: rows at I0 and I1 (circular over their words), column sums read at I2
+	 * and written at I3 (which starts one pad word early: the pipeline's first store is
+	 * a don't-care), P3 iterations of 8 columns. */
+.Lp_pass:
+	disalgnexcpt || r0 = [i0++] || r2 = [i1++];
+	disalgnexcpt || r1 = [i0++] || r3 = [i1++];
+	r6 = [i2++];
+	lsetup (.Lq0, .Lq1) lc0 = p3;
+.Lq0:	(r5, r4) = byteop16p (r1:0, r3:2) || r0 = [i0++] || r2 = [i1++];
+	r6 = r6 +|+ r4 || [i3++] = r7 || r7 = [i2++];
+	r7 = r7 +|+ r5 || [i3++] = r6 || r6 = [i2++];
+	(r5, r4) = byteop16p (r1:0, r3:2) (r) || r1 = [i0++] || r3 = [i1++];
+	r6 = r6 +|+ r4 || [i3++] = r7 || r7 = [i2++];
+.Lq1:	r7 = r7 +|+ r5 || [i3++] = r6 || r6 = [i2++];
+	[i3++] = r7;
+	rts;
+	.size _bvb_scanline_profile_u8_asm, . - _bvb_scanline_profile_u8_asm
+
+
+/* S(t) for one shift: I0 -> p1[i0], I1 -> p2[i0 + t] (circular over each profile's words),
+ * r4 = overlap n, p2 = n >> 3. Result in r5. Uses r0-r3, a0, a1, p0, p1, lc0.
+ * The n mod 4 odd bytes are taken first, one by one; SAA does the rest. */
+.macro SAD_AT id
+	r5 = 0;
+	r2 = 3;
+	r2 = r2 & r4;
+	cc = r2 == 0;
+	if cc jump .Ls_body_\id;
+	p0 = i0;
+	p1 = i1;
+	lc0 = r2;
+	lsetup (.Lt0_\id, .Lt1_\id) lc0;
+.Lt0_\id:
+	r0 = b[p0++] (z);
+	r1 = b[p1++] (z);
+	r0 = r0 - r1 (ns);
+	r0 = abs r0;
+.Lt1_\id:
+	r5 = r5 + r0;
+	i0 = p0;
+	i1 = p1;
+.Ls_body_\id:
+	disalgnexcpt || r0 = [i0++] || r2 = [i1++];
+	disalgnexcpt || r1 = [i0++] || r3 = [i1++];
+	a1 = a0 = 0;
+	cc = p2 == 0;
+	if cc jump .Ls_chunks_done_\id;
+	lsetup (.Ls0_\id, .Ls1_\id) lc0 = p2;
+.Ls0_\id:
+	saa (r1:0, r3:2) || r0 = [i0++] || r2 = [i1++];
+.Ls1_\id:
+	saa (r1:0, r3:2) (r) || r1 = [i0++] || r3 = [i1++];
+.Ls_chunks_done_\id:
+	cc = bittst (r4, 2);
+	if !cc jump .Ls_no4_\id;
+	saa (r1:0, r3:2);
+.Ls_no4_\id:
+	/* The four lanes are unsigned 16-bit sums: add them with the MACs. */
+	r1 = a1, r0 = a0 (fu);
+	r2 = 1;
+	a1 = r0.h * r2.l, a0 = r0.l * r2.l (fu);
+	a1 += r1.h * r2.l, a0 += r1.l * r2.l (fu);
+	r0 = (a0 += a1);
+	r5 = r5 + r0;
+.endm
+
+/* S(t) when the overlap n = r4 is below 4: byte by byte (SAA's read-ahead would touch the
+ * word past a profile). */
+.macro SAD_SMALL id
+	r5 = 0;
+	p0 = i0;
+	p1 = i1;
+	lc0 = r4;
+	lsetup (.Lu0_\id, .Lu1_\id) lc0;
+.Lu0_\id:
+	r0 = b[p0++] (z);
+	r1 = b[p1++] (z);
+	r0 = r0 - r1 (ns);
+	r0 = abs r0;
+.Lu1_\id:
+	r5 = r5 + r0;
+.endm
+
+/* Keep shift t if S * n_best < S_best * n (f(t) below the best so far). r5 = S, r4 = n,
+ * r6 = S_best, r7 = n_best, p3 = best t. The search runs outwards, so n <= n_best always:
+ * S >= S_best then already means f(t) >= f(best), without the products. */
+.macro KEEP_IF_BETTER treg, id
+	cc = r5 < r6 (iu);
+	if !cc jump .Lk_skip_\id (bp);
+	r0 = r5;
+	r0 *= r7;
+	r1 = r6;
+	r1 *= r4;
+	cc = r0 < r1 (iu);
+	if cc r6 = r5;
+	if cc r7 = r4;
+	if cc p3 = \treg;
+.Lk_skip_\id:
+.endm
+
+/* Shifts -k and +k (k = p4 after the increments), by the given S(t) macro. */
+.macro KBODY sad, id
+	p4 += 1;
+	p5 += -1;
+	r4 += -1;			/* n = w - k for both shifts */
+	r0 = r4 >> 3;
+	p2 = r0;
+	m2 = p4;
+	/* t = -k: p1[k..w) against p2[0..w-k). */
+	i0 = m0;
+	i0 += m2;
+	i1 = m1;
+	\sad n\id
+	[i2--] = r5;
+	KEEP_IF_BETTER p5, n\id
+	/* t = +k: p1[0..w-k) against p2[k..w). */
+	i0 = m0;
+	i1 = m1;
+	i1 += m2;
+	\sad p\id
+	[i3++] = r5;
+	KEEP_IF_BETTER p4, p\id
+.endm
+
+/* void bvb_scanline_shift_u8_asm(p1, p2, w, rho, result, curve) */
+	.align 4
+	.global _bvb_scanline_shift_u8_asm
+	.type _bvb_scanline_shift_u8_asm, STT_FUNC
+_bvb_scanline_shift_u8_asm:
+	[--sp] = (r7:4, p5:3);
+	r4 = 0;
+	[--sp] = r4;			/* where the curve goes when there is none */
+	m0 = r0;			/* p1 */
+	m1 = r1;			/* p2 */
+	m2 = r2;			/* w */
+	i0 = r0;
+	CIRC i0, b0, l0, m2
+	i1 = m1;
+	CIRC i1, b1, l1, m2
+	r0 = [sp + 44];			/* rho */
+	r1 = m2;
+	r1 = r1 - r0;			/* T = w - rho */
+	m3 = r1;
+	r0 = [sp + 52];			/* curve */
+	cc = r0 == 0;
+	if !cc jump .Lsh_curve (bp);
+	r0 = sp;
+	b2 = r0;
+	b3 = r0;
+	i2 = r0;
+	i3 = r0;
+	l2 = 4;
+	l3 = 4;
+	jump.s .Lsh_zero;
+.Lsh_curve:
+	r1 <<= 2;
+	r0 = r0 + r1;			/* &curve[T] */
+	i2 = r0;
+	i3 = r0;
+.Lsh_zero:
+	/* t = 0 is the first best. */
+	r4 = m2;			/* n = w - k, k = 0 */
+	r0 = r4 >> 3;
+	p2 = r0;
+	i0 = m0;
+	i1 = m1;
+	cc = r4 <= 3;
+	if !cc jump .Lsh_zero_big (bp);
+	SAD_SMALL z
+	jump.s .Lsh_zero_done;
+.Lsh_zero_big:
+	SAD_AT z
+.Lsh_zero_done:
+	r6 = r5;
+	r7 = r4;
+	p3 = 0;
+	[i2--] = r5;
+	i3 += 4;
+	p4 = 0;				/* k */
+	p5 = 0;				/* -k */
+	/* k = 1..K1 have overlaps of 4 or more (SAA), the rest (when rho < 4) are byte by byte. */
+	r0 = m3;			/* T */
+	r1 = r4;
+	r1 += -4;
+	r2 = 0;
+	r1 = max (r1, r2);
+	r1 = min (r1, r0);		/* K1 = min(T, max(w - 4, 0)) */
+	r0 = r0 - r1;
+	m3 = r0;			/* K2 = T - K1 */
+	cc = r1 == 0;
+	if cc jump .Lsh_small;
+	p0 = r1;
+	lsetup (.Lsh_k, .Lsh_k_end) lc1 = p0;
+.Lsh_k:
+	KBODY SAD_AT, k
+.Lsh_k_end:
+	nop;
+.Lsh_small:
+	r0 = m3;
+	cc = r0 == 0;
+	if cc jump .Lsh_done (bp);
+	p0 = r0;
+	lsetup (.Lsh_s, .Lsh_s_end) lc1 = p0;
+.Lsh_s:
+	KBODY SAD_SMALL, s
+.Lsh_s_end:
+	nop;
+.Lsh_done:
+	r0 = [sp + 48];			/* result */
+	p0 = r0;
+	r0 = p3;
+	[p0] = r0;
+	[p0 + 4] = r6;
+	[p0 + 8] = r7;
+	l0 = 0;
+	l1 = 0;
+	l2 = 0;
+	l3 = 0;
+	sp += 4;
+	(r7:4, p5:3) = [sp++];
+	rts;
+	.size _bvb_scanline_shift_u8_asm, . - _bvb_scanline_shift_u8_asm
