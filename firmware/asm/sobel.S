@@ -1,0 +1,497 @@
+/* Stack frame of the u8 kernel, above the saved registers. */
+#define F_SRC   0
+#define F_SS    4
+#define F_DST   8
+#define F_DS    12
+#define F_W     16
+#define F_H     20
+#define F_SCR   24
+#define F_G     28
+#define F_SAFE  32	/* the safe input line */
+#define F_T     36	/* the output row buffer */
+#define F_END   40	/* one past the last byte of src */
+#define F_Y     44	/* output row of the row-by-row path */
+#define F_DROW  48
+#define LOCALS  64
+#define ARGS    (LOCALS + 32)	/* [sp + ARGS + 12]: the 4th argument */
+
+	.section .l1.text, "ax"
+	.align 4
+	.global _bvb_sobel3x3_u8_asm
+	.type _bvb_sobel3x3_u8_asm, STT_FUNC
+_bvb_sobel3x3_u8_asm:
+	[--sp] = (r7:4, p5:3);
+	[--sp] = rets;			/* the helpers below are called */
+	sp += -LOCALS;
+	[sp + F_SRC] = r0;
+	[sp + F_SS] = r1;
+	[sp + F_DST] = r2;
+	r3 = [sp + ARGS + 12];
+	[sp + F_DS] = r3;
+	r4 = [sp + ARGS + 16];		/* w */
+	[sp + F_W] = r4;
+	r5 = [sp + ARGS + 20];		/* h */
+	[sp + F_H] = r5;
+	r6 = [sp + ARGS + 24];		/* scratch */
+	[sp + F_SCR] = r6;
+	r7 = r4;
+	r7 += 3;
+	r7 >>= 2;			/* G = ceil(w / 4) */
+	[sp + F_G] = r7;
+	r0 = r7 << 4;
+	r1 = r7 << 5;
+	r0 = r0 + r1;			/* 48 G: the ring */
+	r0 = r0 + r6;
+	[sp + F_SAFE] = r0;
+	r1 = r7 << 2;
+	r0 = r0 + r1;
+	r0 += 16;
+	[sp + F_T] = r0;
+	r0 = [sp + F_SS];
+	r1 = r5;
+	r1 += -1;
+	r0 *= r1;
+	r1 = [sp + F_SRC];
+	r0 = r0 + r1;
+	r0 = r0 + r4;
+	[sp + F_END] = r0;		/* src + (h-1) ss + w */
+
+	/* The lane masks of the ring blocks: 255 where the output is an interior pixel, 0 on
+	 * the ring (x = 0 and x >= w-1); MIN with them puts the left and right border zeros in
+	 * place at no cost in the inner loop. All blocks 255 first. */
+	r0.l = 0xff;
+	r0.h = 0xff;
+	r1 = r6;
+	r1 += 16;
+	i0 = r1;
+	m0 = 20 (x);
+	r1 = r7 << 1;
+	p5 = r1;
+	lsetup (.Lcfill, .Lcfill_e) lc0 = p5;
+.Lcfill:
+	[i0++] = r0;
+.Lcfill_e:
+	[i0 ++ m0] = r0;
+	/* The last block of each row: r = w - 4(G-1) valid pixels, lanes i >= r-1 are 0. */
+	r0 = r7 << 2;
+	r0 = r4 - r0;
+	r0 += 4;			/* r in 1..4 */
+	r1 = 0;				/* CA */
+	r2 = 0;				/* CB */
+	r3 = 0xff (z);
+	cc = r0 == 2;
+	if cc r1 = r3;
+	r3.h = 0xff;
+	cc = r0 < 3;
+	if !cc r1 = r3;
+	r5 = 4;
+	r3 = 0xff (z);
+	cc = r0 == r5;
+	if cc r2 = r3;
+	r3 = r7;
+	r3 += -1;
+	r5 = r3 << 3;
+	r3 <<= 4;
+	r3 = r3 + r5;			/* 24 (G-1) */
+	r3 = r3 + r6;
+	p0 = r3;			/* the last block of row 0 */
+	[p0 + 16] = r1;
+	[p0 + 20] = r2;
+	r3 = r7 << 3;
+	r5 = r7 << 4;
+	r3 = r3 + r5;			/* 24 G: the second row of blocks */
+	p1 = r3;
+	p0 = p0 + p1;
+	[p0 + 16] = r1;
+	[p0 + 20] = r2;
+	/* The first block of each row: x = 0 is 0. */
+	p0 = r6;
+	r2.l = 0;
+	r2.h = 0xffff;
+	r0 = [p0 + 16];
+	r0 = r0 & r2;
+	[p0 + 16] = r0;
+	p0 = p0 + p1;
+	r0 = [p0 + 16];
+	r0 = r0 & r2;
+	[p0 + 16] = r0;
+
+	/* Rows 0 and h-1 are 0. */
+	p0 = [sp + F_DST];
+	p1 = r4;
+	call .Lzero;
+	r0 = [sp + F_DS];
+	r1 = [sp + F_H];
+	r1 += -1;
+	r0 *= r1;
+	r1 = [sp + F_DST];
+	r0 = r0 + r1;
+	p0 = r0;
+	p1 = [sp + F_W];
+	call .Lzero;
+
+	/* The first row of blocks, from input rows 0 and 1: H0 into the B slots, then
+	 * H1 into the H slots and 2 (H0 + H1) into the B slots. */
+	r0 = [sp + F_SRC];
+	call .Linrow;			/* r0: row 0 or its safe copy */
+	p0 = r0;
+	r1 = r0;
+	r1 += 1;
+	p1 = r1;
+	i0 = r0;
+	i1 = r1;
+	r2 = -4;
+	r0 = r0 & r2;
+	r1 = r1 & r2;
+	p0 = r0;
+	p1 = r1;
+	r0 = [sp + F_SCR];
+	r0 += 8;
+	i3 = r0;
+	m3 = 20 (x);
+	p5 = [sp + F_G];
+	p5 += -1;
+	/* prologue 0 */
+	R0 = [P0++];                                                                                        /* Lw0 */
+	R1 = [P0];                                                                                          /* Lw1 */
+	R2 = [P1++];                                                                                        /* Lv0 */
+	R3 = [P1];                                                                                          /* Lv1 */
+	CC = P5 == 0;
+	if CC jump .Lp1_kx;
+	lsetup (.Lp1_k, .Lp1_ke) lc0 = P5;
+.Lp1_k:
+	(R3, R2) = BYTEOP16P (R1:0, R3:2) || R0 = [P0++] || NOP;                                            /* A1 Lw0 */
+	MNOP || R1 = [P0] || [I3++] = R2;                                                                   /* Lw1 t1 */
+	MNOP || R2 = [P1++] || [I3 ++ M3] = R3;                                                             /* Lv0 t2 */
+.Lp1_ke:
+	R3 = [P1];                                                                                          /* Lv1 */
+.Lp1_kx:
+	/* epilogue 1 */
+	(R3, R2) = BYTEOP16P (R1:0, R3:2);                                                                  /* A1 */
+	[I3++] = R2;                                                                                        /* t1 */
+	[I3 ++ M3] = R3;                                                                                    /* t2 */
+	r0 = [sp + F_SRC];
+	r1 = [sp + F_SS];
+	r0 = r0 + r1;
+	call .Linrow;			/* row 1 */
+	r1 = r0;
+	r1 += 1;
+	i0 = r0;
+	i1 = r1;
+	r2 = -4;
+	r0 = r0 & r2;
+	r1 = r1 & r2;
+	p0 = r0;
+	p1 = r1;
+	r0 = [sp + F_SCR];
+	i3 = r0;
+	r0 += 8;
+	i2 = r0;
+	m3 = 20 (x);
+	m2 = 12 (x);
+	p5 = [sp + F_G];
+	p5 += -1;
+	/* prologue 0 */
+	R0 = [P0++];                                                                                        /* Lw0 */
+	R1 = [P0];                                                                                          /* Lw1 */
+	R2 = [P1++];                                                                                        /* Lv0 */
+	R3 = [P1];                                                                                          /* Lv1 */
+	(R3, R2) = BYTEOP16P (R1:0, R3:2) || R0 = [I2++] || NOP;                                            /* A1 h0a */
+	CC = P5 == 0;
+	if CC jump .Lp2_kx;
+	lsetup (.Lp2_k, .Lp2_ke) lc0 = P5;
+.Lp2_k:
+	R4 = R2 +|+ R0, R5 = R2 -|- R0 (ASL) || R0 = [P0++] || R1 = [I2 ++ M3];                             /* A2 Lw0 h0b */
+	R5 = R3 +|+ R1, R6 = R3 -|- R1 (ASL) || R1 = [P0] || [I3++] = R2;                                   /* A3 Lw1 t1 */
+	MNOP || R2 = [P1++] || [I3++] = R3;                                                                 /* Lv0 t2 */
+	MNOP || R3 = [P1] || [I3++] = R4;                                                                   /* Lv1 t3 */
+.Lp2_ke:
+	(R3, R2) = BYTEOP16P (R1:0, R3:2) || R0 = [I2++] || [I3 ++ M2] = R5;                                /* A1 h0a t4 */
+.Lp2_kx:
+	/* epilogue 1 */
+	R4 = R2 +|+ R0, R5 = R2 -|- R0 (ASL) || R1 = [I2 ++ M3] || NOP;                                     /* A2 h0b */
+	R5 = R3 +|+ R1, R6 = R3 -|- R1 (ASL) || [I3++] = R2 || NOP;                                         /* A3 t1 */
+	[I3++] = R3;                                                                                        /* t2 */
+	[I3++] = R4;                                                                                        /* t3 */
+	[I3 ++ M2] = R5;                                                                                    /* t4 */
+
+	/* The ring: two rows of G blocks, walked by I2 (the row of blocks above) and I3 (the
+	 * row being made), both circular so that neither needs resetting between rows. */
+	r0 = [sp + F_SCR];
+	r7 = [sp + F_G];
+	b2 = r0;
+	b3 = r0;
+	r1 = r7 << 3;
+	r2 = r7 << 4;
+	r1 = r1 + r2;			/* 24 G */
+	r2 = r1 << 1;			/* 48 G */
+	l2 = r2;
+	l3 = r2;
+	r3 = r0 + r2;
+	r3 += -10;
+	i2 = r3;			/* block 0, at B(-1) */
+	r3 = r0 + r1;
+	r3 += -10;
+	i3 = r3;			/* block G, at B(-1) */
+	m0 = 8 (x);
+	m1 = -6 (x);
+	m2 = -4 (x);
+
+	/* One stream over the whole frame when rows are contiguous and dst rows aligned. */
+	r4 = [sp + F_W];
+	r0 = [sp + F_SS];
+	cc = r0 == r4;
+	if !cc jump .Lrows;
+	r0 = [sp + F_DS];
+	cc = r0 == r4;
+	if !cc jump .Lrows;
+	r0 = [sp + F_DST];
+	r0 = r0 | r4;
+	r1 = 3;
+	r0 = r0 & r1;
+	cc = r0 == 0;
+	if !cc jump .Lrows;
+	r0 = 8;
+	cc = r4 < r0;
+	if cc jump .Lrows;
+
+	/* Rows 1 .. h-2 but the very last group: input from row 2 on. */
+	r0 = [sp + F_SRC];
+	r4 = [sp + F_SS];
+	r0 = r0 + r4;
+	r0 = r0 + r4;
+	r1 = r0;
+	r1 += 1;
+	i0 = r0;
+	i1 = r1;
+	r2 = -4;
+	r0 = r0 & r2;
+	r1 = r1 & r2;
+	p0 = r0;
+	p1 = r1;
+	r0 = [sp + F_DST];
+	r0 = r0 + r4;
+	p2 = r0;
+	r0 = [sp + F_H];
+	r0 += -2;
+	r0 *= r7;
+	r0 += -2;
+	p5 = r0;			/* (h-2) G - 1 iterations */
+	call .Lseg;
+	/* The last group reads from a copy of the last row, so nothing past the frame is read. */
+	r0 = [sp + F_SS];
+	r1 = [sp + F_H];
+	r1 += -1;
+	r0 *= r1;
+	r1 = [sp + F_SRC];
+	r0 = r0 + r1;
+	call .Lsafe;			/* r0: the copy */
+	r1 = [sp + F_G];		/* .Lseg clobbered R0-R7 */
+	r1 <<= 2;
+	r0 = r0 + r1;
+	r0 += -4;
+	r1 = r0;
+	r1 += 1;
+	i0 = r0;			/* the copy keeps the byte offset, but .Lsafe moved I0, I1 */
+	i1 = r1;
+	r2 = -4;
+	r0 = r0 & r2;
+	r1 = r1 & r2;
+	p0 = r0;
+	p1 = r1;
+	p5 = 0;
+	call .Lseg;
+	jump .Ldone;
+
+	/* Row by row: input rows read in place while that stays inside src, output rows written
+	 * in place when aligned, else through the row buffer. */
+.Lrows:
+	r0 = 1;
+	[sp + F_Y] = r0;
+.Lrow:
+	r0 = [sp + F_Y];
+	r1 = [sp + F_SS];
+	r0 += 1;
+	r0 *= r1;
+	r1 = [sp + F_SRC];
+	r0 = r0 + r1;
+	call .Linrow;
+	r1 = r0;
+	r1 += 1;
+	i0 = r0;
+	i1 = r1;
+	r2 = -4;
+	r0 = r0 & r2;
+	r1 = r1 & r2;
+	p0 = r0;
+	p1 = r1;
+	r0 = [sp + F_Y];
+	r1 = [sp + F_DS];
+	r0 *= r1;
+	r1 = [sp + F_DST];
+	r0 = r0 + r1;
+	[sp + F_DROW] = r0;
+	r1 = [sp + F_W];
+	r1 = r1 | r0;
+	r2 = 3;
+	r1 = r1 & r2;
+	cc = r1 == 0;
+	r1 = [sp + F_T];
+	if !cc r0 = r1;
+	p2 = r0;
+	p5 = [sp + F_G];
+	p5 += -1;
+	call .Lseg;
+	r0 = [sp + F_T];
+	r1 = p2;
+	r2 = [sp + F_G];
+	r2 <<= 2;
+	r0 = r0 + r2;
+	cc = r0 == r1;
+	if !cc jump .Lrow_next;
+	p0 = [sp + F_T];		/* the row went to the row buffer: copy it out */
+	p1 = [sp + F_DROW];
+	p2 = [sp + F_W];
+	call .Lcopy;
+.Lrow_next:
+	r0 = [sp + F_Y];
+	r0 += 1;
+	[sp + F_Y] = r0;
+	r1 = [sp + F_H];
+	r1 += -1;
+	cc = r0 < r1;
+	if cc jump .Lrow;
+
+.Ldone:
+	r0 = 0;
+	l0 = r0;
+	l1 = r0;
+	l2 = r0;
+	l3 = r0;
+	sp += 32;
+	sp += 32;			/* LOCALS */
+	rets = [sp++];
+	(r7:4, p5:3) = [sp++];
+	rts;
+
+	/* r0 = an input row; returns it, or a copy in the safe line when the groups' reads
+	 * (up to 4 G + 4 bytes past the row start) would leave src. */
+.Linrow:
+	r1 = [sp + F_G];
+	r1 <<= 2;
+	r1 = r1 + r0;
+	r1 += 4;
+	r2 = [sp + F_END];
+	cc = r1 < r2 (iu);
+	if !cc jump .Lsafe;
+	rts;
+.Lsafe:
+	/* Copies the words holding r0 .. r0 + w - 1 to the safe line, keeping the byte offset;
+	 * returns the copy's address of r0. */
+	r1 = -4;
+	r1 = r0 & r1;
+	i0 = r1;
+	r2 = r0 - r1;			/* offset in the word */
+	r3 = [sp + F_SAFE];
+	r0 = r3 + r2;
+	i1 = r3;
+	r3 = [sp + F_W];
+	r3 = r3 + r2;
+	r3 += -1;
+	r3 >>= 2;			/* words to copy, less one */
+	p0 = r3;
+	r1 = [i0++];
+	cc = p0 == 0;
+	if cc jump .Lsafe_e;
+	lsetup (.Lsafe_l, .Lsafe_l) lc0 = p0;
+.Lsafe_l:
+	mnop || r1 = [i0++] || [i1++] = r1;
+.Lsafe_e:
+	[i1++] = r1;
+	rts;
+
+	/* Zeroes p1 bytes at p0. */
+.Lzero:
+	r0 = 0;
+	r1 = p0;
+	r2 = p1;
+	r1 = r1 | r2;
+	r2 = 3;
+	r1 = r1 & r2;
+	cc = r1 == 0;
+	if !cc jump .Lzero_b;
+	p1 = p1 >> 2;
+	lsetup (.Lzero_w, .Lzero_w) lc0 = p1;
+.Lzero_w:
+	[p0++] = r0;
+	rts;
+.Lzero_b:
+	lsetup (.Lzero_bl, .Lzero_bl) lc0 = p1;
+.Lzero_bl:
+	b[p0++] = r0;
+	rts;
+
+	/* Copies p2 bytes from p0 to p1. */
+.Lcopy:
+	lsetup (.Lcopy_l, .Lcopy_e) lc0 = p2;
+.Lcopy_l:
+	r0 = b[p0++] (z);
+.Lcopy_e:
+	b[p1++] = r0;
+	rts;
+
+	/* The inner loop: p5 + 1 groups of 4 output pixels (bvb/sobel.h for the method).
+	 * In: P0, P1 the aligned words of input windows x..x+3 and x+1..x+4 (I0, I1 the
+	 * same addresses unaligned: BYTEOP16P takes the byte offset from them), P2 output, I2, I3
+	 * the ring (circular), M0 = 8, M1 = -6, M2 = -4. Clobbers R0-R7, P5, LC0.
+	 * Software-pipelined over two groups, one instruction per cycle, 16 cycles a group. */
+.Lseg:
+	/* prologue 0 */
+	R0 = [P0++];                                                                                        /* Lw0 */
+	R1 = [P0];                                                                                          /* Lw1 */
+	R2 = [P1++];                                                                                        /* Lv0 */
+	MNOP || R3 = [P1] || R6.L = W[I2++];                                                                /* Lv1 s1 */
+	I2 += M0;                                                                                           /* s1b */
+	MNOP || R7 = [I2++] || R5.L = W[I3++];                                                              /* s2 t1 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || I3 += M0;                                       /* A1 s3 t1b */
+	R0 = R3 +|+ R7, R7 = R3 -|- R7 (ASL) || R6.H = W[I2++] || [I3++] = R3;                              /* A2 s4 t2 */
+	R2 = R1 +|+ R2, R7 = R1 -|- R2 (ASL) || R3.L = W[I2++] || [I3++] = R1;                              /* A3 s5 t3 */
+	R1 = R0 -|- R6 || R3.H = W[I2] || [I3++] = R0;                                                      /* K1a s6 t4 */
+	R3 = R2 -|- R3 || R0 = [I2 ++ M2] || [I3--] = R2;                                                   /* K1b s7 t5 */
+	R1 = ABS R1 (V) || R2 = [I2 ++ M0] || R5.H = W[I3++];                                               /* X1 s8 t6 */
+	R5 = R2 -|- R5 || R6.L = W[I3++] || NOP;                                                            /* K2a t7 */
+	R2 = ABS R3 (V) || R6.H = W[I3++] || NOP;                                                           /* X2 t8 */
+	R0 = R0 -|- R6;                                                                                     /* K2b */
+	R3 = ABS R5 (V);                                                                                    /* X3 */
+	CC = P5 == 0;
+	if CC jump .Lu8_kx;
+	lsetup (.Lu8_k, .Lu8_ke) lc0 = P5;
+.Lu8_k:
+	R4 = ABS R0 (V) || R0 = [P0++] || NOP;                                                              /* X4 Lw0 */
+	R6 = MAX (R1, R3) (V) || R1 = [P0] || R3 = [I2++];                                                  /* M1 Lw1 s9 */
+	R5 = MAX (R2, R4) (V) || R2 = [P1++] || R4 = [I2 ++ M1];                                            /* M2 Lv0 s10 */
+	R7 = MIN (R6, R3) (V) || R3 = [P1] || R6.L = W[I2++];                                               /* N1 Lv1 s1 */
+	R4 = MIN (R5, R4) (V) || I2 += M0 || NOP;                                                           /* N2 s1b */
+	R4 = BYTEPACK (R7, R4) || R7 = [I2++] || R5.L = W[I3++];                                            /* PK s2 t1 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || I3 += M0;                                       /* A1 s3 t1b */
+	R0 = R3 +|+ R7, R7 = R3 -|- R7 (ASL) || R6.H = W[I2++] || [I3++] = R3;                              /* A2 s4 t2 */
+	R2 = R1 +|+ R2, R7 = R1 -|- R2 (ASL) || R3.L = W[I2++] || [I3++] = R1;                              /* A3 s5 t3 */
+	R1 = R0 -|- R6 || R3.H = W[I2] || [I3++] = R0;                                                      /* K1a s6 t4 */
+	R3 = R2 -|- R3 || R0 = [I2 ++ M2] || [I3--] = R2;                                                   /* K1b s7 t5 */
+	R1 = ABS R1 (V) || R2 = [I2 ++ M0] || R5.H = W[I3++];                                               /* X1 s8 t6 */
+	R5 = R2 -|- R5 || [P2++] = R4 || R6.L = W[I3++];                                                    /* K2a SW t7 */
+	R2 = ABS R3 (V) || R6.H = W[I3++] || NOP;                                                           /* X2 t8 */
+	R0 = R0 -|- R6;                                                                                     /* K2b */
+.Lu8_ke:
+	R3 = ABS R5 (V);                                                                                    /* X3 */
+.Lu8_kx:
+	/* epilogue 1 */
+	R4 = ABS R0 (V);                                                                                    /* X4 */
+	R6 = MAX (R1, R3) (V) || R3 = [I2++] || NOP;                                                        /* M1 s9 */
+	R5 = MAX (R2, R4) (V) || R4 = [I2 ++ M1] || NOP;                                                    /* M2 s10 */
+	R7 = MIN (R6, R3) (V);                                                                              /* N1 */
+	R4 = MIN (R5, R4) (V);                                                                              /* N2 */
+	R4 = BYTEPACK (R7, R4);                                                                             /* PK */
+	[P2++] = R4;                                                                                        /* SW */
+	rts;
+	.size _bvb_sobel3x3_u8_asm, . - _bvb_sobel3x3_u8_asm
