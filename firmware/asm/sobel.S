@@ -1,18 +1,27 @@
-/* Stack frame of the u8 kernel, above the saved registers. */
-#define F_SRC   0
-#define F_SS    4
-#define F_DST   8
-#define F_DS    12
-#define F_W     16
-#define F_H     20
-#define F_SCR   24
-#define F_G     28
-#define F_SAFE  32	/* the safe input line */
-#define F_T     36	/* the output row buffer */
-#define F_END   40	/* one past the last byte of src */
-#define F_Y     44	/* output row of the row-by-row path */
-#define F_DROW  48
-#define LOCALS  64
+/* sobel: header to come */
+/* The stack frame both kernels share (the helpers below read it at [sp + F_*]). */
+#define F_C     0	/* 0x00FF00FF: the s16 loop's MIN constant, read at [SP] */
+#define F_SRC   4
+#define F_SS    8
+#define F_W     12
+#define F_H     16
+#define F_SCR   20
+#define F_G     24	/* groups of 4 pixels per row: ceil(w / 4) */
+#define F_SAFE  28	/* the safe input line */
+#define F_END   32	/* one past the last byte of src */
+#define F_Y     36	/* output row of the row-by-row path */
+#define F_DST   40	/* u8: dst; s16: mag (or 0) */
+#define F_DS    44	/* u8: dst stride; s16: mag stride */
+#define F_T     48	/* the 8-bit output row buffer */
+#define F_DROW  52
+#define F_GX    56
+#define F_GY    60
+#define F_GS    64	/* gx/gy row stride in bytes */
+#define F_TGX   68
+#define F_TGY   72
+#define F_GXROW 76
+#define F_GYROW 80
+#define LOCALS  96
 #define ARGS    (LOCALS + 32)	/* [sp + ARGS + 12]: the 4th argument */
 
 	.section .l1.text, "ax"
@@ -22,7 +31,8 @@
 _bvb_sobel3x3_u8_asm:
 	[--sp] = (r7:4, p5:3);
 	[--sp] = rets;			/* the helpers below are called */
-	sp += -LOCALS;
+	sp += -64;
+	sp += -32;			/* LOCALS */
 	[sp + F_SRC] = r0;
 	[sp + F_SS] = r1;
 	[sp + F_DST] = r2;
@@ -151,25 +161,7 @@ _bvb_sobel3x3_u8_asm:
 	m3 = 20 (x);
 	p5 = [sp + F_G];
 	p5 += -1;
-	/* prologue 0 */
-	R0 = [P0++];                                                                                        /* Lw0 */
-	R1 = [P0];                                                                                          /* Lw1 */
-	R2 = [P1++];                                                                                        /* Lv0 */
-	R3 = [P1];                                                                                          /* Lv1 */
-	CC = P5 == 0;
-	if CC jump .Lp1_kx;
-	lsetup (.Lp1_k, .Lp1_ke) lc0 = P5;
-.Lp1_k:
-	(R3, R2) = BYTEOP16P (R1:0, R3:2) || R0 = [P0++] || NOP;                                            /* A1 Lw0 */
-	MNOP || R1 = [P0] || [I3++] = R2;                                                                   /* Lw1 t1 */
-	MNOP || R2 = [P1++] || [I3 ++ M3] = R3;                                                             /* Lv0 t2 */
-.Lp1_ke:
-	R3 = [P1];                                                                                          /* Lv1 */
-.Lp1_kx:
-	/* epilogue 1 */
-	(R3, R2) = BYTEOP16P (R1:0, R3:2);                                                                  /* A1 */
-	[I3++] = R2;                                                                                        /* t1 */
-	[I3 ++ M3] = R3;                                                                                    /* t2 */
+	call .Lpass1;
 	r0 = [sp + F_SRC];
 	r1 = [sp + F_SS];
 	r0 = r0 + r1;
@@ -368,11 +360,317 @@ _bvb_sobel3x3_u8_asm:
 	l1 = r0;
 	l2 = r0;
 	l3 = r0;
-	sp += 32;
-	sp += 32;			/* LOCALS */
+	sp += 48;
+	sp += 48;			/* LOCALS */
 	rets = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;
+	.size _bvb_sobel3x3_u8_asm, . - _bvb_sobel3x3_u8_asm
+
+	.global _bvb_sobel3x3_s16_asm
+	.type _bvb_sobel3x3_s16_asm, STT_FUNC
+_bvb_sobel3x3_s16_asm:
+	[--sp] = (r7:4, p5:3);
+	[--sp] = rets;
+	sp += -64;
+	sp += -32;			/* LOCALS */
+	[sp + F_SRC] = r0;
+	[sp + F_SS] = r1;
+	[sp + F_GX] = r2;
+	r3 = [sp + ARGS + 12];
+	[sp + F_GY] = r3;
+	r3 = [sp + ARGS + 16];
+	r3 <<= 1;
+	[sp + F_GS] = r3;
+	r3 = [sp + ARGS + 20];
+	[sp + F_DST] = r3;		/* mag, or 0 */
+	r3 = [sp + ARGS + 24];
+	[sp + F_DS] = r3;
+	r4 = [sp + ARGS + 28];		/* w */
+	[sp + F_W] = r4;
+	r5 = [sp + ARGS + 32];		/* h */
+	[sp + F_H] = r5;
+	r6 = [sp + ARGS + 36];		/* scratch */
+	[sp + F_SCR] = r6;
+	r0.l = 0xff;
+	r0.h = 0xff;
+	[sp + F_C] = r0;
+	r7 = r4;
+	r7 += 3;
+	r7 >>= 2;			/* G */
+	[sp + F_G] = r7;
+	r0 = r7 << 5;			/* 32 G: the ring */
+	r0 = r0 + r6;
+	[sp + F_SAFE] = r0;
+	r1 = r7 << 2;
+	r0 = r0 + r1;
+	r0 += 16;
+	[sp + F_TGX] = r0;
+	r1 = r7 << 3;
+	r0 = r0 + r1;
+	[sp + F_TGY] = r0;
+	r0 = r0 + r1;
+	[sp + F_T] = r0;
+	r0 = [sp + F_SS];
+	r1 = r5;
+	r1 += -1;
+	r0 *= r1;
+	r1 = [sp + F_SRC];
+	r0 = r0 + r1;
+	r0 = r0 + r4;
+	[sp + F_END] = r0;
+
+	/* Rows 0 and h-1 are 0. */
+	p0 = [sp + F_GX];
+	p1 = [sp + F_W];
+	call .Lzero16;
+	p0 = [sp + F_GY];
+	p1 = [sp + F_W];
+	call .Lzero16;
+	r0 = [sp + F_GS];
+	r1 = [sp + F_H];
+	r1 += -1;
+	r0 *= r1;
+	p2 = r0;
+	p0 = [sp + F_GX];
+	p0 = p0 + p2;
+	p1 = [sp + F_W];
+	call .Lzero16;
+	p0 = [sp + F_GY];
+	p0 = p0 + p2;
+	p1 = [sp + F_W];
+	call .Lzero16;
+	r0 = [sp + F_DST];
+	cc = r0 == 0;
+	if cc jump .Ls16_nomag0;
+	p0 = r0;
+	p1 = [sp + F_W];
+	call .Lzero;
+	r0 = [sp + F_DS];
+	r1 = [sp + F_H];
+	r1 += -1;
+	r0 *= r1;
+	r1 = [sp + F_DST];
+	r0 = r0 + r1;
+	p0 = r0;
+	p1 = [sp + F_W];
+	call .Lzero;
+.Ls16_nomag0:
+
+	/* The first row of blocks (16 bytes each: H, then B unscaled). */
+	r0 = [sp + F_SRC];
+	call .Linrow;
+	r1 = r0;
+	r1 += 1;
+	i0 = r0;
+	i1 = r1;
+	r2 = -4;
+	r0 = r0 & r2;
+	r1 = r1 & r2;
+	p0 = r0;
+	p1 = r1;
+	r0 = [sp + F_SCR];
+	r0 += 8;
+	i3 = r0;
+	m3 = 12 (x);
+	p5 = [sp + F_G];
+	p5 += -1;
+	call .Lpass1;
+	r0 = [sp + F_SRC];
+	r1 = [sp + F_SS];
+	r0 = r0 + r1;
+	call .Linrow;
+	r1 = r0;
+	r1 += 1;
+	i0 = r0;
+	i1 = r1;
+	r2 = -4;
+	r0 = r0 & r2;
+	r1 = r1 & r2;
+	p0 = r0;
+	p1 = r1;
+	r0 = [sp + F_SCR];
+	i3 = r0;
+	r0 += 8;
+	i2 = r0;
+	m3 = 12 (x);
+	m2 = 4 (x);
+	p5 = [sp + F_G];
+	p5 += -1;
+	/* prologue 0 */
+	R0 = [P0++];                                                                                        /* Lw0 */
+	R1 = [P0];                                                                                          /* Lw1 */
+	R2 = [P1++];                                                                                        /* Lv0 */
+	R3 = [P1];                                                                                          /* Lv1 */
+	(R3, R2) = BYTEOP16P (R1:0, R3:2) || R0 = [I2++] || NOP;                                            /* A1 h0a */
+	CC = P5 == 0;
+	if CC jump .Lp2u_kx;
+	lsetup (.Lp2u_k, .Lp2u_ke) lc0 = P5;
+.Lp2u_k:
+	R4 = R2 +|+ R0 || R0 = [P0++] || R1 = [I2 ++ M3];                                                   /* A2 Lw0 h0b */
+	R5 = R3 +|+ R1 || R1 = [P0] || [I3++] = R2;                                                         /* A3 Lw1 t1 */
+	MNOP || R2 = [P1++] || [I3++] = R3;                                                                 /* Lv0 t2 */
+	MNOP || R3 = [P1] || [I3++] = R4;                                                                   /* Lv1 t3 */
+.Lp2u_ke:
+	(R3, R2) = BYTEOP16P (R1:0, R3:2) || R0 = [I2++] || [I3 ++ M2] = R5;                                /* A1 h0a t4 */
+.Lp2u_kx:
+	/* epilogue 1 */
+	R4 = R2 +|+ R0 || R1 = [I2 ++ M3] || NOP;                                                           /* A2 h0b */
+	R5 = R3 +|+ R1 || [I3++] = R2 || NOP;                                                               /* A3 t1 */
+	[I3++] = R3;                                                                                        /* t2 */
+	[I3++] = R4;                                                                                        /* t3 */
+	[I3 ++ M2] = R5;                                                                                    /* t4 */
+
+	r0 = [sp + F_SCR];
+	r7 = [sp + F_G];
+	b2 = r0;
+	b3 = r0;
+	r1 = r7 << 4;			/* 16 G */
+	r2 = r1 << 1;			/* 32 G */
+	l2 = r2;
+	l3 = r2;
+	r3 = r0 + r2;
+	r3 += -2;
+	i2 = r3;			/* block 0, at B(-1) */
+	r3 = r0 + r1;
+	r3 += -2;
+	i3 = r3;			/* block G, at B(-1) */
+	m1 = 6 (x);
+	m2 = -4 (x);
+
+	r0 = 1;
+	[sp + F_Y] = r0;
+.Ls16_row:
+	r0 = [sp + F_Y];
+	r1 = [sp + F_SS];
+	r0 += 1;
+	r0 *= r1;
+	r1 = [sp + F_SRC];
+	r0 = r0 + r1;
+	call .Linrow;
+	r1 = r0;
+	r1 += 1;
+	i0 = r0;
+	i1 = r1;
+	r2 = -4;
+	r0 = r0 & r2;
+	r1 = r1 & r2;
+	p0 = r0;
+	p1 = r1;
+	r0 = [sp + F_Y];
+	r1 = [sp + F_GS];
+	r0 *= r1;
+	r1 = [sp + F_GX];
+	r1 = r1 + r0;
+	[sp + F_GXROW] = r1;
+	r2 = [sp + F_GY];
+	r2 = r2 + r0;
+	[sp + F_GYROW] = r2;
+	r3 = [sp + F_W];
+	r3 = r3 | r1;
+	r3 = r3 | r2;
+	r0 = 3;
+	r3 = r3 & r0;
+	cc = r3 == 0;			/* gx, gy rows aligned and no partial group: in place */
+	r0 = [sp + F_TGX];
+	if !cc r1 = r0;
+	r0 = [sp + F_TGY];
+	if !cc r2 = r0;
+	p2 = r1;
+	p3 = r2;
+	p5 = [sp + F_G];
+	p5 += -1;
+	r0 = [sp + F_DST];
+	cc = r0 == 0;
+	if cc jump .Ls16_nomag;
+	r1 = [sp + F_Y];
+	r2 = [sp + F_DS];
+	r1 *= r2;
+	r0 = r0 + r1;
+	[sp + F_DROW] = r0;
+	r1 = [sp + F_W];
+	r1 = r1 | r0;
+	r2 = 3;
+	r1 = r1 & r2;
+	cc = r1 == 0;
+	r1 = [sp + F_T];
+	if !cc r0 = r1;
+	p4 = r0;
+	call .Lseg16m;
+	r0 = p4;
+	r1 = [sp + F_DROW];
+	r2 = [sp + F_G];
+	r2 <<= 2;
+	r1 = r1 + r2;
+	cc = r0 == r1;
+	if cc jump .Ls16_gxgy;
+	p0 = [sp + F_T];		/* the magnitude row went to its row buffer */
+	p1 = [sp + F_DROW];
+	p2 = [sp + F_W];
+	call .Lcopy;
+	jump .Ls16_gxgy;
+.Ls16_nomag:
+	call .Lseg16;
+.Ls16_gxgy:
+	r0 = p3;
+	r1 = [sp + F_GYROW];
+	r2 = [sp + F_G];
+	r2 <<= 3;
+	r1 = r1 + r2;
+	cc = r0 == r1;
+	if cc jump .Ls16_border;
+	p0 = [sp + F_TGX];		/* gx and gy went to their row buffers */
+	p1 = [sp + F_GXROW];
+	p2 = [sp + F_W];
+	call .Lcopy16;
+	p0 = [sp + F_TGY];
+	p1 = [sp + F_GYROW];
+	p2 = [sp + F_W];
+	call .Lcopy16;
+.Ls16_border:
+	/* x = 0 and x = w-1 are 0. */
+	r0 = 0;
+	r1 = [sp + F_W];
+	r1 += -1;
+	p2 = r1;
+	r1 <<= 1;
+	p1 = r1;
+	p0 = [sp + F_GXROW];
+	w[p0] = r0;
+	p0 = p0 + p1;
+	w[p0] = r0;
+	p0 = [sp + F_GYROW];
+	w[p0] = r0;
+	p0 = p0 + p1;
+	w[p0] = r0;
+	r1 = [sp + F_DST];
+	cc = r1 == 0;
+	if cc jump .Ls16_next;
+	p0 = [sp + F_DROW];
+	b[p0] = r0;
+	p0 = p0 + p2;
+	b[p0] = r0;
+.Ls16_next:
+	r0 = [sp + F_Y];
+	r0 += 1;
+	[sp + F_Y] = r0;
+	r1 = [sp + F_H];
+	r1 += -1;
+	cc = r0 < r1;
+	if cc jump .Ls16_row;
+
+	r0 = 0;
+	l0 = r0;
+	l1 = r0;
+	l2 = r0;
+	l3 = r0;
+	sp += 48;
+	sp += 48;			/* LOCALS */
+	rets = [sp++];
+	(r7:4, p5:3) = [sp++];
+	rts;
+	.size _bvb_sobel3x3_s16_asm, . - _bvb_sobel3x3_s16_asm
+
 
 	/* r0 = an input row; returns it, or a copy in the safe line when the groups' reads
 	 * (up to 4 G + 4 bytes past the row start) would leave src. */
@@ -494,4 +792,150 @@ _bvb_sobel3x3_u8_asm:
 	R4 = BYTEPACK (R7, R4);                                                                             /* PK */
 	[P2++] = R4;                                                                                        /* SW */
 	rts;
-	.size _bvb_sobel3x3_u8_asm, . - _bvb_sobel3x3_u8_asm
+
+	/* Zeroes p1 int16 at p0. */
+.Lzero16:
+	r0 = 0;
+	lsetup (.Lzero16_l, .Lzero16_l) lc0 = p1;
+.Lzero16_l:
+	w[p0++] = r0;
+	rts;
+
+	/* Copies p2 int16 from p0 (4-byte aligned) to p1. */
+.Lcopy16:
+	i0 = p0;
+	r0.l = w[i0++];
+	p2 += -1;
+	cc = p2 == 0;
+	if cc jump .Lcopy16_e;
+	lsetup (.Lcopy16_l, .Lcopy16_l) lc0 = p2;
+.Lcopy16_l:
+	mnop || w[p1++] = r0 || r0.l = w[i0++];
+.Lcopy16_e:
+	w[p1++] = r0;
+	rts;
+
+	/* The first row of blocks, part 1: H of input row 0 into the B slots. P0, P1, I0, I1 the
+	 * row as for the inner loops, I3 the first B slot, M3 the block size - 4, P5 = G - 1. */
+.Lpass1:
+	/* prologue 0 */
+	R0 = [P0++];                                                                                        /* Lw0 */
+	R1 = [P0];                                                                                          /* Lw1 */
+	R2 = [P1++];                                                                                        /* Lv0 */
+	R3 = [P1];                                                                                          /* Lv1 */
+	CC = P5 == 0;
+	if CC jump .Lp1_kx;
+	lsetup (.Lp1_k, .Lp1_ke) lc0 = P5;
+.Lp1_k:
+	(R3, R2) = BYTEOP16P (R1:0, R3:2) || R0 = [P0++] || NOP;                                            /* A1 Lw0 */
+	MNOP || R1 = [P0] || [I3++] = R2;                                                                   /* Lw1 t1 */
+	MNOP || R2 = [P1++] || [I3 ++ M3] = R3;                                                             /* Lv0 t2 */
+.Lp1_ke:
+	R3 = [P1];                                                                                          /* Lv1 */
+.Lp1_kx:
+	/* epilogue 1 */
+	(R3, R2) = BYTEOP16P (R1:0, R3:2);                                                                  /* A1 */
+	[I3++] = R2;                                                                                        /* t1 */
+	[I3 ++ M3] = R3;                                                                                    /* t2 */
+	rts;
+
+	/* The gx/gy inner loop: p5 + 1 groups of 4 pixels; as .Lseg, with gx to P2, gy to P3, the
+	 * ring in 16-byte blocks (M1 = 6, M2 = -4). 14 cycles a group. */
+.Lseg16:
+	/* prologue 0 */
+	R0 = [P0++];                                                                                        /* Lw0 */
+	MNOP || R2 = [P1++] || R6.L = W[I2++];                                                              /* Lv0 s1 */
+	MNOP || R3 = [P1] || R5.L = W[I3++];                                                                /* Lv1 t1 */
+	R1 = [P0];                                                                                          /* Lw1 */
+	(R0, R3) = BYTEOP16P (R1:0, R3:2) || R1 = [I2++] || NOP;                                            /* A1 s2 */
+	R2 = [I2++];                                                                                        /* s3 */
+	R1 = R3 +|+ R1 || R6.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R0 +|+ R2 || R2.L = W[I2++] || [I3++] = R0;                                                    /* A3 s5 t3 */
+	R0 = R1 -|- R6 || R2.H = W[I2] || [I3++] = R1;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	MNOP || R3 = [I2 ++ M1] || R5.H = W[I3++];                                                          /* s8 t6 */
+	R3 = R3 -|- R5 || R5.L = W[I3++] || NOP;                                                            /* K2a t7 */
+	CC = P5 == 0;
+	if CC jump .Ls16_kx;
+	lsetup (.Ls16_k, .Ls16_ke) lc0 = P5;
+.Ls16_k:
+	R4 = R0 +|+ R3, R3 = R0 -|- R3 || R0 = [P0++] || R5.H = W[I3++];                                    /* Q1 Lw0 t8 */
+	[P2++] = R4;                                                                                        /* SXA */
+	R4 = R2 -|- R5 || R2 = [P1++] || R6.L = W[I2++];                                                    /* K2b Lv0 s1 */
+	[P3++] = R3;                                                                                        /* SYA */
+	R7 = R1 +|+ R4, R4 = R1 -|- R4 || R3 = [P1] || R5.L = W[I3++];                                      /* Q2 Lv1 t1 */
+	R1 = [P0];                                                                                          /* Lw1 */
+	(R0, R3) = BYTEOP16P (R1:0, R3:2) || R1 = [I2++] || NOP;                                            /* A1 s2 */
+	MNOP || [P2++] = R7 || R2 = [I2++];                                                                 /* SXB s3 */
+	R1 = R3 +|+ R1 || R6.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R0 +|+ R2 || R2.L = W[I2++] || [I3++] = R0;                                                    /* A3 s5 t3 */
+	R0 = R1 -|- R6 || R2.H = W[I2] || [I3++] = R1;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	MNOP || R3 = [I2 ++ M1] || R5.H = W[I3++];                                                          /* s8 t6 */
+.Ls16_ke:
+	R3 = R3 -|- R5 || [P3++] = R4 || R5.L = W[I3++];                                                    /* K2a SYB t7 */
+.Ls16_kx:
+	/* epilogue 1 */
+	R4 = R0 +|+ R3, R3 = R0 -|- R3 || R5.H = W[I3++] || NOP;                                            /* Q1 t8 */
+	[P2++] = R4;                                                                                        /* SXA */
+	R4 = R2 -|- R5;                                                                                     /* K2b */
+	[P3++] = R3;                                                                                        /* SYA */
+	R7 = R1 +|+ R4, R4 = R1 -|- R4;                                                                     /* Q2 */
+	[P2++] = R7;                                                                                        /* SXB */
+	[P3++] = R4;                                                                                        /* SYB */
+	rts;
+
+	/* The same with the magnitude to P4 (MIN 255 with the word at [SP]). 18 cycles a group. */
+.Lseg16m:
+	/* prologue 0 */
+	R2 = [P1++];                                                                                        /* Lv0 */
+	R4.L = W[I2++];                                                                                     /* s1 */
+	R3 = [P1];                                                                                          /* Lv1 */
+	R0 = [P0++];                                                                                        /* Lw0 */
+	MNOP || R1 = [P0] || R7 = [I2++];                                                                   /* Lw1 s2 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || R0.L = W[I3++];                                 /* A1 s3 t1 */
+	R7 = R3 +|+ R7 || R4.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R1 +|+ R2 || R2.L = W[I2++] || [I3++] = R1;                                                    /* A3 s5 t3 */
+	R4 = R7 -|- R4 || R2.H = W[I2] || [I3++] = R7;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	MNOP || R5 = [I2 ++ M1] || R0.H = W[I3++];                                                          /* s8 t6 */
+	R5 = R5 -|- R0 || R0.L = W[I3++] || NOP;                                                            /* K2a t7 */
+	R5 = R4 +|+ R5, R4 = R4 -|- R5 || R0.H = W[I3++] || NOP;                                            /* Q1 t8 */
+	R0 = R2 -|- R0 || [P2++] = R5 || NOP;                                                               /* K2b SXA */
+	R3 = R1 +|+ R0, R0 = R1 -|- R0 || [P3++] = R4 || NOP;                                               /* Q2 SYA */
+	R1 = ABS R5 (V) || [P2++] = R3 || NOP;                                                              /* XA SXB */
+	CC = P5 == 0;
+	if CC jump .Ls16m_kx;
+	lsetup (.Ls16m_k, .Ls16m_ke) lc0 = P5;
+.Ls16m_k:
+	R4 = ABS R4 (V) || R2 = [P1++] || NOP;                                                              /* YA Lv0 */
+	R1 = R1 +|+ R4 || [P3++] = R0 || R4.L = W[I2++];                                                    /* SA SYB s1 */
+	R5 = ABS R3 (V) || R3 = [P1] || NOP;                                                                /* XB Lv1 */
+	R0 = ABS R0 (V);                                                                                    /* YB */
+	R7 = R5 +|+ R0 || R6 = [SP] || NOP;                                                                 /* SB LC */
+	R5 = MIN (R1, R6) (V) || R0 = [P0++] || NOP;                                                        /* NA Lw0 */
+	R6 = MIN (R7, R6) (V) || R1 = [P0] || R7 = [I2++];                                                  /* NB Lw1 s2 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || R0.L = W[I3++];                                 /* A1 s3 t1 */
+	R7 = R3 +|+ R7 || R4.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R1 +|+ R2 || R2.L = W[I2++] || [I3++] = R1;                                                    /* A3 s5 t3 */
+	R4 = R7 -|- R4 || R2.H = W[I2] || [I3++] = R7;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	R3 = BYTEPACK (R5, R6) || R5 = [I2 ++ M1] || R0.H = W[I3++];                                        /* PK s8 t6 */
+	R5 = R5 -|- R0 || [P4++] = R3 || R0.L = W[I3++];                                                    /* K2a SM t7 */
+	R5 = R4 +|+ R5, R4 = R4 -|- R5 || R0.H = W[I3++] || NOP;                                            /* Q1 t8 */
+	R0 = R2 -|- R0 || [P2++] = R5 || NOP;                                                               /* K2b SXA */
+	R3 = R1 +|+ R0, R0 = R1 -|- R0 || [P3++] = R4 || NOP;                                               /* Q2 SYA */
+.Ls16m_ke:
+	R1 = ABS R5 (V) || [P2++] = R3 || NOP;                                                              /* XA SXB */
+.Ls16m_kx:
+	/* epilogue 1 */
+	R4 = ABS R4 (V);                                                                                    /* YA */
+	R1 = R1 +|+ R4 || [P3++] = R0 || NOP;                                                               /* SA SYB */
+	R5 = ABS R3 (V);                                                                                    /* XB */
+	R0 = ABS R0 (V);                                                                                    /* YB */
+	R7 = R5 +|+ R0 || R6 = [SP] || NOP;                                                                 /* SB LC */
+	R5 = MIN (R1, R6) (V);                                                                              /* NA */
+	R6 = MIN (R7, R6) (V);                                                                              /* NB */
+	R3 = BYTEPACK (R5, R6);                                                                             /* PK */
+	[P4++] = R3;                                                                                        /* SM */
+	rts;
