@@ -538,6 +538,145 @@ _bvb_sobel3x3_s16_asm:
 	m1 = 6 (x);
 	m2 = -4 (x);
 
+	/* One stream over the whole frame when src, gx, gy (and mag) rows are contiguous and
+	 * aligned; the border columns are then zeroed afterwards. */
+	r4 = [sp + F_W];
+	r0 = [sp + F_SS];
+	cc = r0 == r4;
+	if !cc jump .Ls16_rows;
+	r0 = [sp + F_GS];
+	r1 = r4 << 1;
+	cc = r0 == r1;
+	if !cc jump .Ls16_rows;
+	r0 = [sp + F_GX];
+	r1 = [sp + F_GY];
+	r0 = r0 | r1;
+	r0 = r0 | r4;
+	r1 = [sp + F_DST];
+	r0 = r0 | r1;
+	r1 = 3;
+	r0 = r0 & r1;
+	cc = r0 == 0;
+	if !cc jump .Ls16_rows;
+	r0 = 8;
+	cc = r4 < r0;
+	if cc jump .Ls16_rows;
+	r0 = [sp + F_DST];
+	cc = r0 == 0;
+	if cc jump .Ls16_stream;
+	r0 = [sp + F_DS];
+	cc = r0 == r4;
+	if !cc jump .Ls16_rows;
+.Ls16_stream:
+	r0 = [sp + F_SRC];
+	r0 = r0 + r4;
+	r0 = r0 + r4;			/* input row 2 */
+	r1 = r0;
+	r1 += 1;
+	i0 = r0;
+	i1 = r1;
+	r2 = -4;
+	r0 = r0 & r2;
+	r1 = r1 & r2;
+	p0 = r0;
+	p1 = r1;
+	r1 = r4 << 1;
+	r0 = [sp + F_GX];
+	r0 = r0 + r1;
+	p2 = r0;
+	r0 = [sp + F_GY];
+	r0 = r0 + r1;
+	p3 = r0;
+	r0 = [sp + F_DST];
+	r0 = r0 + r4;
+	p4 = r0;
+	r0 = [sp + F_H];
+	r0 += -2;
+	r0 *= r7;
+	r0 += -2;
+	p5 = r0;			/* (h-2) G - 1 groups */
+	r0 = [sp + F_DST];
+	cc = r0 == 0;
+	if cc jump .Ls16_sa;
+	call .Lseg16m;
+	jump .Ls16_sb;
+.Ls16_sa:
+	call .Lseg16;
+.Ls16_sb:
+	/* The last group from a copy of the last row. */
+	r0 = [sp + F_SS];
+	r1 = [sp + F_H];
+	r1 += -1;
+	r0 *= r1;
+	r1 = [sp + F_SRC];
+	r0 = r0 + r1;
+	call .Lsafe;
+	r1 = [sp + F_G];
+	r1 <<= 2;
+	r0 = r0 + r1;
+	r0 += -4;
+	r1 = r0;
+	r1 += 1;
+	i0 = r0;
+	i1 = r1;
+	r2 = -4;
+	r0 = r0 & r2;
+	r1 = r1 & r2;
+	p0 = r0;
+	p1 = r1;
+	p5 = 0;
+	r0 = [sp + F_DST];
+	cc = r0 == 0;
+	if cc jump .Ls16_sc;
+	call .Lseg16m;
+	jump .Ls16_sd;
+.Ls16_sc:
+	call .Lseg16;
+.Ls16_sd:
+	/* x = w-1 of row y and x = 0 of row y+1 are neighbours: zero both, for y = 0 .. h-2. */
+	r4 = [sp + F_W];
+	r0 = r4 << 1;
+	p4 = r0;			/* gx/gy row */
+	r0 += -2;
+	r1 = [sp + F_GX];
+	r1 = r1 + r0;
+	p0 = r1;
+	r1 = [sp + F_GY];
+	r1 = r1 + r0;
+	p1 = r1;
+	r0 = [sp + F_DST];
+	r0 = r0 + r4;
+	r0 += -1;
+	p2 = r0;
+	p3 = r4;			/* mag row */
+	p5 = [sp + F_H];
+	p5 += -1;
+	r0 = 0;
+	r1 = [sp + F_DST];
+	cc = r1 == 0;
+	if cc jump .Ls16_bnm;
+	lsetup (.Ls16_bl, .Ls16_ble) lc0 = p5;
+.Ls16_bl:
+	w[p0 + 2] = r0;
+	w[p0 ++ p4] = r0.l;
+	w[p1 + 2] = r0;
+	w[p1 ++ p4] = r0.l;
+	b[p2 + 1] = r0;
+	b[p2] = r0;
+.Ls16_ble:
+	p2 = p2 + p3;
+	jump .Ls16_done;
+.Ls16_bnm:
+	lsetup (.Ls16_bn, .Ls16_bne) lc0 = p5;
+.Ls16_bn:
+	w[p0 + 2] = r0;
+	w[p0 ++ p4] = r0.l;
+	w[p1 + 2] = r0;
+.Ls16_bne:
+	w[p1 ++ p4] = r0.l;
+	jump .Ls16_done;
+
+.Ls16_rows:
 	r0 = 1;
 	[sp + F_Y] = r0;
 .Ls16_row:
@@ -659,6 +798,7 @@ _bvb_sobel3x3_s16_asm:
 	cc = r0 < r1;
 	if cc jump .Ls16_row;
 
+.Ls16_done:
 	r0 = 0;
 	l0 = r0;
 	l1 = r0;
