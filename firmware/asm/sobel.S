@@ -1,4 +1,64 @@
-/* sobel: header to come */
+/* Sobel 3x3: magnitude (bvb_sobel3x3_u8_asm) and gx/gy with an optional magnitude
+ * (bvb_sobel3x3_s16_asm). Definitions, arguments and the scratch size: bvb/sobel.h.
+ *
+ * Method. With the 2x2 box sum B(x,y) = p(x,y) + p(x+1,y) + p(x,y+1) + p(x+1,y+1):
+ *   K1 = B(x,y) - B(x-1,y-1),  K2 = B(x,y-1) - B(x-1,y),  Gx = K1 + K2,  Gy = K1 - K2,
+ *   |Gx| + |Gy| = 2 max(|K1|, |K2|).
+ * A row of box sums serves two output rows, and the horizontal byte-pair sums H(x) = p(x) +
+ * p(x+1) of an input row serve two rows of box sums. Per group of 4 output pixels (x..x+3):
+ *   H of input row y+1            1 BYTEOP16P (two byte windows, offsets from I0, I1)
+ *   B of row y = H(y) + H(y+1)    2 quad add/sub (ASL: the u8 kernel keeps 2B; one half unused)
+ *   K1, K2 for 4 pixels           4 dual 16-bit subtract (the x-1 neighbours come from memory:
+ *                                   the new row of B is stored and read back at a 2-byte offset)
+ *   u8:  max(|K1|, |K2|), clamp   4 ABS (V), 2 MAX (V), 2 MIN (V) against a per-block lane mask,
+ *                                   1 BYTEPACK                                   = 16
+ *   s16: gx, gy                   2 quad add/sub (K1 +|+ K2, K1 -|- K2)           = 9
+ *        + magnitude              4 ABS (V), 2 add, 2 MIN (V), 1 BYTEPACK          = 18
+ * The lane mask of the u8 kernel is 255 for interior pixels and 0 for x = 0 and x >= w-1, so
+ * MIN writes the left and right border zeros for free.
+ *
+ * Memory. scratch: a ring of two rows of blocks (one block per 4 pixels: H, 2B and the two
+ * lane-mask words for u8, 24 bytes; H and B for s16, 16 bytes), walked by I2 (the row above)
+ * and I3 (the row being made) as circular buffers, one input line (the last input row is read
+ * from a copy, so no load leaves src) and the output row buffers of the row-by-row path.
+ * 56 ceil(w/4) + 16 bytes: 2.3 KB at width 160, 9 KB at 640 -- it belongs in L1. Frames are
+ * read once and written once, in row order (bvb/sobel.h: a three-row L1 ring filled by DMA on
+ * the robot); the simulator counts the same cycles wherever they are, and the check places them
+ * in L1 when they fit, in SDRAM otherwise.
+ *
+ * Lower bound (16 and 18 instructions per 4 pixels above, one 32-bit ALU/MAC instruction per
+ * cycle): 4 cycles per interior pixel for u8, 4.5 for s16 with the magnitude. Memory does not
+ * bind: per group u8 issues 18 loads, 5 stores and 2 pointer steps in 16 cycles (32 slots), s16
+ * with the magnitude 17 loads and 9 stores in 18. Why
+ * not fewer: each output needs two signed 16-bit gradient values (1 dual-lane instruction per
+ * pixel), two absolute values (1 per pixel), their combination and clamp (0.5 + 0.5), the pack
+ * (0.25), and a new box sum (0.5 per pixel for the 16-bit add, 0.25 for the byte pair sums);
+ * only the add/sub pairs of the gradients fit the quad instruction. (ADI's dual-MAC 3x3
+ * convolution: 4.5 cycles per pixel for one mask.) Without the magnitude, s16 needs 24 memory
+ * slots per group (12 cycles); its loop takes 14 (8 data registers).
+ *
+ * Measured (bfbench bench, frames contiguous: strides == width):
+ *   sobel3x3_u8    160x120      76,586 cycles  3.99 per pixel  (C -O2: 1,946,028, 25.4x)
+ *                  320x240     306,346         3.99            (C: 7,885,188, 25.7x)
+ *                  640x480   1,226,666         3.99            (C: 31,744,308, 25.9x)
+ *   sobel3x3_s16   160x120      87,420         4.55 with mag   (C: 2,045,839, 23.4x)
+ *                  320x240     347,140         4.52            (C: 8,276,799, 23.8x)
+ *                  640x480   1,384,980         4.51            (C: 33,295,519, 24.0x)
+ *   The inner loop is 16 (u8), 14 or 18 (s16) cycles per 4 pixels; the rest is the first row
+ *   of blocks (9 cycles per 4 pixels), the ring's lane masks, the zero rows and, for s16, the
+ *   border columns (7 cycles per row). Other layouts go row by row (about 100 cycles a row on
+ *   top, plus a copy from the row buffer when the output row is not 4-byte aligned or the
+ *   width not a multiple of 4): u8 at 160x120 with 16 bytes of row padding 88,513 cycles (4.61
+ *   per pixel), with dst one byte off 127,244 (6.63); s16 with gx/gy 2 bytes off 186,283
+ *   (9.70).
+ *
+ * Registers in the loops: R0-R3 the input words (BYTEOP16P reads R1:0 and R3:2), R4-R7 the
+ * rest; P0, P1 the aligned input words, P2 (P3, P4) outputs, P5 the count; I0, I1 hold only the
+ * byte offsets of the two input windows; M0-M2 the ring walk. The loops are software-pipelined
+ * over two groups (prologue, kernel, epilogue below); the comment after each instruction names
+ * its operations. Blocks of B are read back at 2-byte offsets with half-register loads, which
+ * is what lets a single 16-cycle group keep both the x and the x-1 neighbours. */
+
 /* The stack frame both kernels share (the helpers below read it at [sp + F_*]). */
 #define F_C     0	/* 0x00FF00FF: the s16 loop's MIN constant, read at [SP] */
 #define F_SRC   4
@@ -882,7 +942,13 @@ _bvb_sobel3x3_s16_asm:
 	 * In: P0, P1 the aligned words of input windows x..x+3 and x+1..x+4 (I0, I1 the
 	 * same addresses unaligned: BYTEOP16P takes the byte offset from them), P2 output, I2, I3
 	 * the ring (circular), M0 = 8, M1 = -6, M2 = -4. Clobbers R0-R7, P5, LC0.
-	 * Software-pipelined over two groups, one instruction per cycle, 16 cycles a group. */
+	 * Software-pipelined over two groups, one instruction per cycle, 16 cycles a group.
+	 * Operations: Lw0, Lw1 / Lv0, Lv1 the two words of the windows at x / x+1; A1 the pair sums
+	 * H of the new input row; s1-s10 the walk over the blocks above (B(x-1) .. B(x+2) as halves
+	 * into BOA, BOB; H; B(x..x+3) as words; the lane masks); A2, A3 the new 2B = 2 (H + H);
+	 * t1-t8 the walk over the new blocks (store H and 2B, read B(x-1) .. B(x+2) back); K1a, K1b
+	 * = 2B(new) - Bo(above); K2a, K2b = 2B(above) - Bo(new); X1-X4 ABS; M1, M2 MAX; N1, N2 MIN
+	 * with the lane masks; PK BYTEPACK; SW the store. */
 .Lseg:
 	/* prologue 0 */
 	R0 = [P0++];                                                                                        /* Lw0 */
@@ -980,7 +1046,9 @@ _bvb_sobel3x3_s16_asm:
 	rts;
 
 	/* The gx/gy inner loop: p5 + 1 groups of 4 pixels; as .Lseg, with gx to P2, gy to P3, the
-	 * ring in 16-byte blocks (M1 = 6, M2 = -4). 14 cycles a group. */
+	 * ring in 16-byte blocks (M1 = 6, M2 = -4) holding H and B unscaled. 14 cycles a group.
+	 * Operations as in .Lseg; Q1, Q2 the quad add/sub gx = K1 + K2, gy = K1 - K2; SXA .. SYB
+	 * their stores. */
 .Lseg16:
 	/* prologue 0 */
 	R0 = [P0++];                                                                                        /* Lw0 */
@@ -1025,7 +1093,9 @@ _bvb_sobel3x3_s16_asm:
 	[P3++] = R4;                                                                                        /* SYB */
 	rts;
 
-	/* The same with the magnitude to P4 (MIN 255 with the word at [SP]). 18 cycles a group. */
+	/* The same with the magnitude to P4: XA .. YB ABS, SA, SB |gx| + |gy|, LC the constant
+	 * 0x00FF00FF at [SP] (the caller's frame), NA, NB MIN, PK BYTEPACK, SM its store.
+	 * 18 cycles a group. */
 .Lseg16m:
 	/* prologue 0 */
 	R2 = [P1++];                                                                                        /* Lv0 */

@@ -15,14 +15,15 @@
  *
  * Arguments
  *   src, src_stride       width x height bytes, src_stride bytes from row to row.
- *   dst / mag, *_stride   bytes from row to row; gx, gy share g_stride, counted in int16
- *                         elements.
- *   width, height         3 or more each. Strides >= width. Frames may overlap nothing else.
+ *   dst / mag, *_stride   bytes from row to row; mag may be NULL (mag_stride is then unused).
+ *   gx, gy, g_stride      int16 arrays (2-byte aligned) sharing g_stride, counted in elements.
+ *   width, height         3 or more each. Strides >= width. Outputs overlap nothing.
  *   scratch               BVB_SOBEL3X3_SCRATCH_SIZE(width) bytes, 4-byte aligned, contents
  *                         ignored and clobbered; the C reference does not use it.
- * No alignment is required of src, dst, gx, gy, mag or the strides. The assembly is fastest when
- * the frame is one contiguous block (strides == width, width a multiple of 4) with dst 4-byte
- * aligned; every other layout goes row by row through a row buffer in scratch.
+ * No other alignment is required of the frames or the strides. The assembly is fastest when the
+ * frames are contiguous (every stride == width), width is a multiple of 4 (8 or more) and the
+ * outputs are 4-byte aligned: it then runs over the frame as one stream. Other layouts go row
+ * by row (see firmware/asm/sobel.S for what that costs).
  *
  * How the assembly computes it (bit-exact with the textbook form above)
  *   With the 2x2 box sum B(x, y) = p(x,y) + p(x+1,y) + p(x,y+1) + p(x+1,y+1):
@@ -33,14 +34,14 @@
  *   subtractions per two pixels, and then ABS, MAX, MIN and BYTEPACK.
  *
  * Working set and memory
- *   scratch holds two rows of box sums and horizontal pair sums (32 bytes per 4 pixels of
- *   width), one row of input and the output row buffers: 6.5 KB at width 160 for both kernels
- *   together with the frames' rows being read, i.e. it belongs in L1. At 160x120 the whole frame
- *   (19 KB) fits L1 data memory; at 320x240 and 640x480 frames live in SDRAM. The kernels read
- *   each input row once, in order, and write each output row once, so on the robot three input
- *   rows would circulate through an L1 ring filled by memory DMA (row y+2 arriving while row
- *   y+1 is processed), with output rows drained the same way; the simulator does not model
- *   SDRAM latency, so the kernels here read the frame in place. */
+ *   scratch holds two rows of box sums and horizontal pair sums (48 bytes per 4 pixels of width
+ *   for u8, 32 for s16), one input row and the output row buffers: 2.3 KB at width 160, 9 KB at
+ *   640; it belongs in L1. At 160x120 a frame (19 KB) fits L1 data memory; at 320x240 and
+ *   640x480 frames live in SDRAM. The kernels read each input row once, in order, and write
+ *   each output row once, so on the robot three input rows would circulate through an L1 ring
+ *   filled by memory DMA (row y+2 arriving while row y+1 is processed), with output rows
+ *   drained the same way; the simulator does not model SDRAM latency, so the kernels here
+ *   read the frame in place. */
 #ifndef BVB_SOBEL_H
 #define BVB_SOBEL_H
 
