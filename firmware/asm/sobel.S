@@ -81,8 +81,11 @@
 #define F_TGY   72
 #define F_GXROW 76
 #define F_GYROW 80
-#define LOCALS  96
-#define ARGS    (LOCALS + 32)	/* [sp + ARGS + 12]: the 4th argument */
+#define F_LP0   84	/* the last row's input words and the rows less 2 (.Lsegr) */
+#define F_LP1   88
+#define F_RM2   92
+#define LOCALS  112
+#define ARGS    (LOCALS + 36)	/* [sp + ARGS + 12]: the 4th argument */
 
 	.section .l1.text, "ax"
 	.align 4
@@ -90,9 +93,10 @@
 	.type _bvb_sobel3x3_u8_asm, STT_FUNC
 _bvb_sobel3x3_u8_asm:
 	[--sp] = (r7:4, p5:3);
+	[--sp] = fp;
 	[--sp] = rets;			/* the helpers below are called */
 	sp += -64;
-	sp += -32;			/* LOCALS */
+	sp += -48;			/* LOCALS */
 	[sp + F_SRC] = r0;
 	[sp + F_SS] = r1;
 	[sp + F_DST] = r2;
@@ -355,9 +359,75 @@ _bvb_sobel3x3_u8_asm:
 	call .Lseg;
 	jump .Ldone;
 
+	/* Aligned output rows, input rows all at one byte offset, width a multiple of 4: row
+	 * after row without draining the loop, only the pointers move between rows. */
+.Lrows:
+	r4 = [sp + F_W];
+	r0 = [sp + F_DST];
+	r1 = [sp + F_DS];
+	r0 = r0 | r1;
+	r0 = r0 | r4;
+	r1 = [sp + F_SS];
+	r0 = r0 | r1;
+	r1 = 3;
+	r0 = r0 & r1;
+	cc = r0 == 0;
+	if !cc jump .Lrows_buf;
+	r0 = 8;
+	cc = r4 < r0;
+	if cc jump .Lrows_buf;
+	r5 = [sp + F_H];
+	r0 = 4;
+	cc = r5 < r0;
+	if cc jump .Lrows_buf;
+	r0 = r5;
+	r0 += -4;
+	[sp + F_RM2] = r0;		/* output rows less 2 */
+	r0 = [sp + F_SS];
+	r5 += -1;
+	r0 *= r5;
+	r1 = [sp + F_SRC];
+	r0 = r0 + r1;
+	call .Lsafe;			/* the last input row, copied */
+	r1 = r0;
+	r1 += 1;
+	r2 = -4;
+	r0 = r0 & r2;
+	r1 = r1 & r2;
+	[sp + F_LP0] = r0;
+	[sp + F_LP1] = r1;
+	r7 = [sp + F_G];
+	r6 = r7 << 2;			/* 4 G = w */
+	r4 = [sp + F_SS];
+	r0 = [sp + F_SRC];
+	r0 = r0 + r4;
+	r0 = r0 + r4;			/* input row 2 */
+	r1 = r0;
+	r1 += 1;
+	i0 = r0;
+	i1 = r1;
+	r2 = -4;
+	r0 = r0 & r2;
+	r1 = r1 & r2;
+	p0 = r0;
+	p1 = r1;
+	m3 = r4;
+	r0 = r4 - r6;
+	p3 = r0;			/* input: row to row, less what a row of groups moved */
+	r1 = [sp + F_DS];
+	r0 = r1 - r6;
+	p4 = r0;			/* output: the same */
+	r0 = [sp + F_DST];
+	r0 = r0 + r1;
+	p2 = r0;
+	p5 = r7;
+	p5 += -1;
+	call .Lsegr;
+	jump .Ldone;
+
 	/* Row by row: input rows read in place while that stays inside src, output rows written
 	 * in place when aligned, else through the row buffer. */
-.Lrows:
+.Lrows_buf:
 	r0 = 1;
 	[sp + F_Y] = r0;
 .Lrow:
@@ -420,9 +490,10 @@ _bvb_sobel3x3_u8_asm:
 	l1 = r0;
 	l2 = r0;
 	l3 = r0;
-	sp += 48;
-	sp += 48;			/* LOCALS */
+	sp += 56;
+	sp += 56;			/* LOCALS */
 	rets = [sp++];
+	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;
 	.size _bvb_sobel3x3_u8_asm, . - _bvb_sobel3x3_u8_asm
@@ -431,9 +502,10 @@ _bvb_sobel3x3_u8_asm:
 	.type _bvb_sobel3x3_s16_asm, STT_FUNC
 _bvb_sobel3x3_s16_asm:
 	[--sp] = (r7:4, p5:3);
+	[--sp] = fp;
 	[--sp] = rets;
 	sp += -64;
-	sp += -32;			/* LOCALS */
+	sp += -48;			/* LOCALS */
 	[sp + F_SRC] = r0;
 	[sp + F_SS] = r1;
 	[sp + F_GX] = r2;
@@ -864,9 +936,10 @@ _bvb_sobel3x3_s16_asm:
 	l1 = r0;
 	l2 = r0;
 	l3 = r0;
-	sp += 48;
-	sp += 48;			/* LOCALS */
+	sp += 56;
+	sp += 56;			/* LOCALS */
 	rets = [sp++];
+	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;
 	.size _bvb_sobel3x3_s16_asm, . - _bvb_sobel3x3_s16_asm
@@ -929,13 +1002,80 @@ _bvb_sobel3x3_s16_asm:
 	b[p0++] = r0;
 	rts;
 
-	/* Copies p2 bytes from p0 to p1. */
+	/* Copies p2 >= 3 bytes from p0 (4-byte aligned) to p1: by words when p1 is aligned, by
+	 * halfwords when it is even, else a byte a cycle. Clobbers R0-R2, P0-P2, I0, LC0. */
 .Lcopy:
-	lsetup (.Lcopy_l, .Lcopy_e) lc0 = p2;
-.Lcopy_l:
-	r0 = b[p0++] (z);
-.Lcopy_e:
+	i0 = p0;
+	r1 = p1;
+	r2 = 3;
+	r2 = r1 & r2;
+	cc = r2 == 0;
+	if cc jump .Lcopy_w;
+	cc = bittst (r1, 0);
+	if !cc jump .Lcopy_h;
+	/* odd: a word in, four bytes out, each shift beside a store */
+	r0 = [i0++];
+	r2 = p2;
+	r1 = 3;
+	r1 = r1 & r2;			/* the bytes after the last whole word */
+	p2 = p2 >> 2;
+	cc = p2 == 0;
+	if cc jump .Lcopy_tail;
+	lsetup (.Lcopy_b, .Lcopy_be) lc0 = p2;
+.Lcopy_b:
+	r1 = r0 >> 8 || b[p1++] = r0 || nop;
+	r0 = r1 >> 8 || b[p1++] = r1 || nop;
+	r1 = r0 >> 8 || b[p1++] = r0 || nop;
+.Lcopy_be:
+	mnop || b[p1++] = r1 || r0 = [i0++];
+	r1 = 3;
+	r1 = r1 & r2;
+	jump .Lcopy_tail;
+.Lcopy_h:
+	r0.l = w[i0++];
+	r1 = p2;
+	p2 = p2 >> 1;
+	p2 += -1;
+	cc = p2 == 0;
+	if cc jump .Lcopy_he;
+	lsetup (.Lcopy_hl, .Lcopy_hl) lc0 = p2;
+.Lcopy_hl:
+	mnop || w[p1++] = r0 || r0.l = w[i0++];
+.Lcopy_he:
+	w[p1++] = r0;
+	cc = bittst (r1, 0);
+	if !cc jump .Lcopy_x;
+	r0.l = w[i0];			/* the odd last byte */
+	b[p1] = r0;
+.Lcopy_x:
+	rts;
+.Lcopy_w:
+	r1 = p2;
+	p2 = p2 >> 2;
+	cc = p2 == 0;
+	if cc jump .Lcopy_w0;
+	r0 = [i0++];
+	p2 += -1;
+	cc = p2 == 0;
+	if cc jump .Lcopy_we;
+	lsetup (.Lcopy_wl, .Lcopy_wl) lc0 = p2;
+.Lcopy_wl:
+	mnop || [p1++] = r0 || r0 = [i0++];
+.Lcopy_we:
+	[p1++] = r0;
+.Lcopy_w0:
+	r2 = 3;
+	r1 = r1 & r2;			/* 0-3 bytes left */
+	r0 = [i0];
+.Lcopy_tail:
+	cc = r1 == 0;
+	if cc jump .Lcopy_x;
+	p2 = r1;
+	lsetup (.Lcopy_tl, .Lcopy_te) lc0 = p2;
+.Lcopy_tl:
 	b[p1++] = r0;
+.Lcopy_te:
+	r0 >>= 8;
 	rts;
 
 	/* The inner loop: p5 + 1 groups of 4 output pixels (bvb/sobel.h for the method).
@@ -999,6 +1139,149 @@ _bvb_sobel3x3_s16_asm:
 	[P2++] = R4;                                                                                        /* SW */
 	rts;
 
+	/* .Lseg over rows 1 .. h-2 with the pipeline kept full from row to row: P0, P1, I0, I1
+	 * input row 2, P2 output row 1, P3 / P4 what the input / output pointers move from the end
+	 * of a row of groups to the next row, M3 the input stride, P5 = G - 1 >= 1, the last row's
+	 * input words (from a copy) and the row count less 2 in the frame; FP is used. The input pointers are used only in
+	 * a group's first 16 cycles and the output only in its second, so the input moves before a
+	 * row's first group and the output one group later: 6 cycles a row. */
+.Lsegr:
+	/* prologue: the first group of the first row */
+	R0 = [P0++];                                                                                        /* Lw0 */
+	R1 = [P0];                                                                                          /* Lw1 */
+	R2 = [P1++];                                                                                        /* Lv0 */
+	MNOP || R3 = [P1] || R6.L = W[I2++];                                                                /* Lv1 s1 */
+	I2 += M0;                                                                                           /* s1b */
+	MNOP || R7 = [I2++] || R5.L = W[I3++];                                                              /* s2 t1 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || I3 += M0;                                       /* A1 s3 t1b */
+	R0 = R3 +|+ R7, R7 = R3 -|- R7 (ASL) || R6.H = W[I2++] || [I3++] = R3;                              /* A2 s4 t2 */
+	R2 = R1 +|+ R2, R7 = R1 -|- R2 (ASL) || R3.L = W[I2++] || [I3++] = R1;                              /* A3 s5 t3 */
+	R1 = R0 -|- R6 || R3.H = W[I2] || [I3++] = R0;                                                      /* K1a s6 t4 */
+	R3 = R2 -|- R3 || R0 = [I2 ++ M2] || [I3--] = R2;                                                   /* K1b s7 t5 */
+	R1 = ABS R1 (V) || R2 = [I2 ++ M0] || R5.H = W[I3++];                                               /* X1 s8 t6 */
+	R5 = R2 -|- R5 || R6.L = W[I3++] || NOP;                                                            /* K2a t7 */
+	R2 = ABS R3 (V) || R6.H = W[I3++] || NOP;                                                           /* X2 t8 */
+	R0 = R0 -|- R6;                                                                                     /* K2b */
+	R3 = ABS R5 (V);                                                                                    /* X3 */
+	lsetup (.Lu8r_a, .Lu8r_ae) lc0 = p5;
+.Lu8r_a:
+	R4 = ABS R0 (V) || R0 = [P0++] || NOP;                                                              /* X4 Lw0 */
+	R6 = MAX (R1, R3) (V) || R1 = [P0] || R3 = [I2++];                                                  /* M1 Lw1 s9 */
+	R5 = MAX (R2, R4) (V) || R2 = [P1++] || R4 = [I2 ++ M1];                                            /* M2 Lv0 s10 */
+	R7 = MIN (R6, R3) (V) || R3 = [P1] || R6.L = W[I2++];                                               /* N1 Lv1 s1 */
+	R4 = MIN (R5, R4) (V) || I2 += M0 || NOP;                                                           /* N2 s1b */
+	R4 = BYTEPACK (R7, R4) || R7 = [I2++] || R5.L = W[I3++];                                            /* PK s2 t1 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || I3 += M0;                                       /* A1 s3 t1b */
+	R0 = R3 +|+ R7, R7 = R3 -|- R7 (ASL) || R6.H = W[I2++] || [I3++] = R3;                              /* A2 s4 t2 */
+	R2 = R1 +|+ R2, R7 = R1 -|- R2 (ASL) || R3.L = W[I2++] || [I3++] = R1;                              /* A3 s5 t3 */
+	R1 = R0 -|- R6 || R3.H = W[I2] || [I3++] = R0;                                                      /* K1a s6 t4 */
+	R3 = R2 -|- R3 || R0 = [I2 ++ M2] || [I3--] = R2;                                                   /* K1b s7 t5 */
+	R1 = ABS R1 (V) || R2 = [I2 ++ M0] || R5.H = W[I3++];                                               /* X1 s8 t6 */
+	R5 = R2 -|- R5 || [P2++] = R4 || R6.L = W[I3++];                                                    /* K2a SW t7 */
+	R2 = ABS R3 (V) || R6.H = W[I3++] || NOP;                                                           /* X2 t8 */
+	R0 = R0 -|- R6;                                                                                     /* K2b */
+.Lu8r_ae:
+	R3 = ABS R5 (V);                                                                                    /* X3 */
+	p0 = p0 + p3;
+	p1 = p1 + p3;
+	i0 += m3;
+	i1 += m3;
+	fp = [sp + F_RM2];
+	cc = fp == 0;
+	if cc jump .Lu8r_bx;
+	lc1 = fp;
+	lsetup (.Lu8r_o, .Lu8r_oe) lc1;
+.Lu8r_o:
+	R4 = ABS R0 (V) || R0 = [P0++] || NOP;                                                              /* X4 Lw0 */
+	R6 = MAX (R1, R3) (V) || R1 = [P0] || R3 = [I2++];                                                  /* M1 Lw1 s9 */
+	R5 = MAX (R2, R4) (V) || R2 = [P1++] || R4 = [I2 ++ M1];                                            /* M2 Lv0 s10 */
+	R7 = MIN (R6, R3) (V) || R3 = [P1] || R6.L = W[I2++];                                               /* N1 Lv1 s1 */
+	R4 = MIN (R5, R4) (V) || I2 += M0 || NOP;                                                           /* N2 s1b */
+	R4 = BYTEPACK (R7, R4) || R7 = [I2++] || R5.L = W[I3++];                                            /* PK s2 t1 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || I3 += M0;                                       /* A1 s3 t1b */
+	R0 = R3 +|+ R7, R7 = R3 -|- R7 (ASL) || R6.H = W[I2++] || [I3++] = R3;                              /* A2 s4 t2 */
+	R2 = R1 +|+ R2, R7 = R1 -|- R2 (ASL) || R3.L = W[I2++] || [I3++] = R1;                              /* A3 s5 t3 */
+	R1 = R0 -|- R6 || R3.H = W[I2] || [I3++] = R0;                                                      /* K1a s6 t4 */
+	R3 = R2 -|- R3 || R0 = [I2 ++ M2] || [I3--] = R2;                                                   /* K1b s7 t5 */
+	R1 = ABS R1 (V) || R2 = [I2 ++ M0] || R5.H = W[I3++];                                               /* X1 s8 t6 */
+	R5 = R2 -|- R5 || [P2++] = R4 || R6.L = W[I3++];                                                    /* K2a SW t7 */
+	R2 = ABS R3 (V) || R6.H = W[I3++] || NOP;                                                           /* X2 t8 */
+	R0 = R0 -|- R6;                                                                                     /* K2b */
+	R3 = ABS R5 (V);                                                                                    /* X3 */
+	p2 = p2 + p4;
+	lsetup (.Lu8r_i, .Lu8r_ie) lc0 = p5;
+.Lu8r_i:
+	R4 = ABS R0 (V) || R0 = [P0++] || NOP;                                                              /* X4 Lw0 */
+	R6 = MAX (R1, R3) (V) || R1 = [P0] || R3 = [I2++];                                                  /* M1 Lw1 s9 */
+	R5 = MAX (R2, R4) (V) || R2 = [P1++] || R4 = [I2 ++ M1];                                            /* M2 Lv0 s10 */
+	R7 = MIN (R6, R3) (V) || R3 = [P1] || R6.L = W[I2++];                                               /* N1 Lv1 s1 */
+	R4 = MIN (R5, R4) (V) || I2 += M0 || NOP;                                                           /* N2 s1b */
+	R4 = BYTEPACK (R7, R4) || R7 = [I2++] || R5.L = W[I3++];                                            /* PK s2 t1 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || I3 += M0;                                       /* A1 s3 t1b */
+	R0 = R3 +|+ R7, R7 = R3 -|- R7 (ASL) || R6.H = W[I2++] || [I3++] = R3;                              /* A2 s4 t2 */
+	R2 = R1 +|+ R2, R7 = R1 -|- R2 (ASL) || R3.L = W[I2++] || [I3++] = R1;                              /* A3 s5 t3 */
+	R1 = R0 -|- R6 || R3.H = W[I2] || [I3++] = R0;                                                      /* K1a s6 t4 */
+	R3 = R2 -|- R3 || R0 = [I2 ++ M2] || [I3--] = R2;                                                   /* K1b s7 t5 */
+	R1 = ABS R1 (V) || R2 = [I2 ++ M0] || R5.H = W[I3++];                                               /* X1 s8 t6 */
+	R5 = R2 -|- R5 || [P2++] = R4 || R6.L = W[I3++];                                                    /* K2a SW t7 */
+	R2 = ABS R3 (V) || R6.H = W[I3++] || NOP;                                                           /* X2 t8 */
+	R0 = R0 -|- R6;                                                                                     /* K2b */
+.Lu8r_ie:
+	R3 = ABS R5 (V);                                                                                    /* X3 */
+	p0 = p0 + p3;
+	p1 = p1 + p3;
+	i0 += m3;
+.Lu8r_oe:
+	i1 += m3;
+.Lu8r_bx:
+	p0 = [sp + F_LP0];
+	p1 = [sp + F_LP1];
+	R4 = ABS R0 (V) || R0 = [P0++] || NOP;                                                              /* X4 Lw0 */
+	R6 = MAX (R1, R3) (V) || R1 = [P0] || R3 = [I2++];                                                  /* M1 Lw1 s9 */
+	R5 = MAX (R2, R4) (V) || R2 = [P1++] || R4 = [I2 ++ M1];                                            /* M2 Lv0 s10 */
+	R7 = MIN (R6, R3) (V) || R3 = [P1] || R6.L = W[I2++];                                               /* N1 Lv1 s1 */
+	R4 = MIN (R5, R4) (V) || I2 += M0 || NOP;                                                           /* N2 s1b */
+	R4 = BYTEPACK (R7, R4) || R7 = [I2++] || R5.L = W[I3++];                                            /* PK s2 t1 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || I3 += M0;                                       /* A1 s3 t1b */
+	R0 = R3 +|+ R7, R7 = R3 -|- R7 (ASL) || R6.H = W[I2++] || [I3++] = R3;                              /* A2 s4 t2 */
+	R2 = R1 +|+ R2, R7 = R1 -|- R2 (ASL) || R3.L = W[I2++] || [I3++] = R1;                              /* A3 s5 t3 */
+	R1 = R0 -|- R6 || R3.H = W[I2] || [I3++] = R0;                                                      /* K1a s6 t4 */
+	R3 = R2 -|- R3 || R0 = [I2 ++ M2] || [I3--] = R2;                                                   /* K1b s7 t5 */
+	R1 = ABS R1 (V) || R2 = [I2 ++ M0] || R5.H = W[I3++];                                               /* X1 s8 t6 */
+	R5 = R2 -|- R5 || [P2++] = R4 || R6.L = W[I3++];                                                    /* K2a SW t7 */
+	R2 = ABS R3 (V) || R6.H = W[I3++] || NOP;                                                           /* X2 t8 */
+	R0 = R0 -|- R6;                                                                                     /* K2b */
+	R3 = ABS R5 (V);                                                                                    /* X3 */
+	p2 = p2 + p4;
+	lsetup (.Lu8r_l, .Lu8r_le) lc0 = p5;
+.Lu8r_l:
+	R4 = ABS R0 (V) || R0 = [P0++] || NOP;                                                              /* X4 Lw0 */
+	R6 = MAX (R1, R3) (V) || R1 = [P0] || R3 = [I2++];                                                  /* M1 Lw1 s9 */
+	R5 = MAX (R2, R4) (V) || R2 = [P1++] || R4 = [I2 ++ M1];                                            /* M2 Lv0 s10 */
+	R7 = MIN (R6, R3) (V) || R3 = [P1] || R6.L = W[I2++];                                               /* N1 Lv1 s1 */
+	R4 = MIN (R5, R4) (V) || I2 += M0 || NOP;                                                           /* N2 s1b */
+	R4 = BYTEPACK (R7, R4) || R7 = [I2++] || R5.L = W[I3++];                                            /* PK s2 t1 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || I3 += M0;                                       /* A1 s3 t1b */
+	R0 = R3 +|+ R7, R7 = R3 -|- R7 (ASL) || R6.H = W[I2++] || [I3++] = R3;                              /* A2 s4 t2 */
+	R2 = R1 +|+ R2, R7 = R1 -|- R2 (ASL) || R3.L = W[I2++] || [I3++] = R1;                              /* A3 s5 t3 */
+	R1 = R0 -|- R6 || R3.H = W[I2] || [I3++] = R0;                                                      /* K1a s6 t4 */
+	R3 = R2 -|- R3 || R0 = [I2 ++ M2] || [I3--] = R2;                                                   /* K1b s7 t5 */
+	R1 = ABS R1 (V) || R2 = [I2 ++ M0] || R5.H = W[I3++];                                               /* X1 s8 t6 */
+	R5 = R2 -|- R5 || [P2++] = R4 || R6.L = W[I3++];                                                    /* K2a SW t7 */
+	R2 = ABS R3 (V) || R6.H = W[I3++] || NOP;                                                           /* X2 t8 */
+	R0 = R0 -|- R6;                                                                                     /* K2b */
+.Lu8r_le:
+	R3 = ABS R5 (V);                                                                                    /* X3 */
+	/* epilogue: the last group of the last row */
+	R4 = ABS R0 (V);                                                                                    /* X4 */
+	R6 = MAX (R1, R3) (V) || R3 = [I2++] || NOP;                                                        /* M1 s9 */
+	R5 = MAX (R2, R4) (V) || R4 = [I2 ++ M1] || NOP;                                                    /* M2 s10 */
+	R7 = MIN (R6, R3) (V);                                                                              /* N1 */
+	R4 = MIN (R5, R4) (V);                                                                              /* N2 */
+	R4 = BYTEPACK (R7, R4);                                                                             /* PK */
+	[P2++] = R4;                                                                                        /* SW */
+	rts;
+
 	/* Zeroes p1 int16 at p0. */
 .Lzero16:
 	r0 = 0;
@@ -1007,17 +1290,36 @@ _bvb_sobel3x3_s16_asm:
 	w[p0++] = r0;
 	rts;
 
-	/* Copies p2 int16 from p0 (4-byte aligned) to p1. */
+	/* Copies p2 >= 3 int16 from p0 (4-byte aligned) to p1 (2-byte aligned): by words when p1
+	 * is 4-byte aligned, else by halfwords. Clobbers R0, R1, P2, I0, LC0. */
 .Lcopy16:
 	i0 = p0;
-	r0.l = w[i0++];
+	r1 = p2;
+	r0 = p1;
+	cc = bittst (r0, 1);
+	if cc jump .Lcopy16_h;
+	r0 = [i0++];
+	p2 = p2 >> 1;
 	p2 += -1;
 	cc = p2 == 0;
-	if cc jump .Lcopy16_e;
+	if cc jump .Lcopy16_we;
+	lsetup (.Lcopy16_wl, .Lcopy16_wl) lc0 = p2;
+.Lcopy16_wl:
+	mnop || [p1++] = r0 || r0 = [i0++];
+.Lcopy16_we:
+	[p1++] = r0;
+	cc = bittst (r1, 0);
+	if !cc jump .Lcopy16_x;
+	r0.l = w[i0];			/* the odd last element */
+	w[p1] = r0;
+.Lcopy16_x:
+	rts;
+.Lcopy16_h:
+	r0.l = w[i0++];
+	p2 += -1;
 	lsetup (.Lcopy16_l, .Lcopy16_l) lc0 = p2;
 .Lcopy16_l:
 	mnop || w[p1++] = r0 || r0.l = w[i0++];
-.Lcopy16_e:
 	w[p1++] = r0;
 	rts;
 
