@@ -81,9 +81,12 @@
 #define F_TGY   72
 #define F_GXROW 76
 #define F_GYROW 80
-#define F_LP0   84	/* the last row's input words and the rows less 2 (.Lsegr) */
+#define F_LP0   84	/* the row-to-row loops: the last row's input words, */
 #define F_LP1   88
-#define F_RM2   92
+#define F_RM2   92	/* the output rows less 2, */
+#define F_DIN   96	/* what the input, 8-bit output and int16 output pointers move */
+#define F_DOUT  100	/* from the end of a row of groups to the next row */
+#define F_DG    104
 #define LOCALS  112
 #define ARGS    (LOCALS + 36)	/* [sp + ARGS + 12]: the 4th argument */
 
@@ -411,12 +414,11 @@ _bvb_sobel3x3_u8_asm:
 	r1 = r1 & r2;
 	p0 = r0;
 	p1 = r1;
-	m3 = r4;
 	r0 = r4 - r6;
-	p3 = r0;			/* input: row to row, less what a row of groups moved */
+	[sp + F_DIN] = r0;
 	r1 = [sp + F_DS];
 	r0 = r1 - r6;
-	p4 = r0;			/* output: the same */
+	[sp + F_DOUT] = r0;
 	r0 = [sp + F_DST];
 	r0 = r0 + r1;
 	p2 = r0;
@@ -808,7 +810,144 @@ _bvb_sobel3x3_s16_asm:
 	w[p1 ++ p4] = r0.l;
 	jump .Ls16_done;
 
+	/* Aligned rows (src, gx, gy, mag strides multiples of 4, outputs 4-byte aligned), width a
+	 * multiple of 4: the loop runs from row to row without draining, then the border columns
+	 * are zeroed. */
 .Ls16_rows:
+	r4 = [sp + F_W];
+	r0 = [sp + F_GX];
+	r1 = [sp + F_GY];
+	r0 = r0 | r1;
+	r1 = [sp + F_GS];
+	r0 = r0 | r1;
+	r1 = [sp + F_SS];
+	r0 = r0 | r1;
+	r1 = [sp + F_DST];
+	r0 = r0 | r1;
+	r0 = r0 | r4;
+	r1 = [sp + F_DS];
+	r2 = [sp + F_DST];
+	cc = r2 == 0;
+	if cc r1 = r2;
+	r0 = r0 | r1;
+	r1 = 3;
+	r0 = r0 & r1;
+	cc = r0 == 0;
+	if !cc jump .Ls16_rows_buf;
+	r0 = 8;
+	cc = r4 < r0;
+	if cc jump .Ls16_rows_buf;
+	r5 = [sp + F_H];
+	r0 = 4;
+	cc = r5 < r0;
+	if cc jump .Ls16_rows_buf;
+	r0 = r5;
+	r0 += -4;
+	[sp + F_RM2] = r0;
+	r0 = [sp + F_SS];
+	r5 += -1;
+	r0 *= r5;
+	r1 = [sp + F_SRC];
+	r0 = r0 + r1;
+	call .Lsafe;			/* the last input row, copied */
+	r1 = r0;
+	r1 += 1;
+	r2 = -4;
+	r0 = r0 & r2;
+	r1 = r1 & r2;
+	[sp + F_LP0] = r0;
+	[sp + F_LP1] = r1;
+	r7 = [sp + F_G];
+	r6 = r7 << 2;			/* 4 G = w */
+	r4 = [sp + F_SS];
+	r0 = r4 - r6;
+	[sp + F_DIN] = r0;
+	r1 = [sp + F_DS];
+	r0 = r1 - r6;
+	[sp + F_DOUT] = r0;
+	r1 = [sp + F_GS];
+	r6 <<= 1;
+	r0 = r1 - r6;
+	[sp + F_DG] = r0;
+	r0 = [sp + F_SRC];
+	r0 = r0 + r4;
+	r0 = r0 + r4;			/* input row 2 */
+	r1 = r0;
+	r1 += 1;
+	i0 = r0;
+	i1 = r1;
+	r2 = -4;
+	r0 = r0 & r2;
+	r1 = r1 & r2;
+	p0 = r0;
+	p1 = r1;
+	r1 = [sp + F_GS];
+	r0 = [sp + F_GX];
+	r0 = r0 + r1;
+	p2 = r0;
+	r0 = [sp + F_GY];
+	r0 = r0 + r1;
+	p3 = r0;
+	r1 = [sp + F_DS];
+	r0 = [sp + F_DST];
+	r0 = r0 + r1;
+	p4 = r0;
+	p5 = r7;
+	p5 += -1;
+	r0 = [sp + F_DST];
+	cc = r0 == 0;
+	if cc jump .Ls16_ra;
+	call .Lsegr16m;
+	jump .Ls16_rb;
+.Ls16_ra:
+	call .Lsegr16;
+.Ls16_rb:
+	/* The border columns of rows 1 .. h-2. */
+	r4 = [sp + F_W];
+	r5 = [sp + F_GS];
+	r0 = r4 << 1;
+	r0 += -2;			/* x = w-1 */
+	r1 = [sp + F_GX];
+	r1 = r1 + r5;
+	p0 = r1;
+	r1 = r1 + r0;
+	p1 = r1;
+	r1 = [sp + F_GY];
+	r1 = r1 + r5;
+	p2 = r1;
+	r1 = r1 + r0;
+	p3 = r1;
+	p4 = r5;
+	p5 = [sp + F_H];
+	p5 += -2;
+	r0 = 0;
+	lsetup (.Ls16_rbl, .Ls16_rble) lc0 = p5;
+.Ls16_rbl:
+	w[p0 ++ p4] = r0.l;
+	w[p1 ++ p4] = r0.l;
+	w[p2 ++ p4] = r0.l;
+.Ls16_rble:
+	w[p3 ++ p4] = r0.l;
+	r1 = [sp + F_DST];
+	cc = r1 == 0;
+	if cc jump .Ls16_done;
+	r2 = [sp + F_DS];
+	r1 = r1 + r2;
+	p0 = r1;
+	r1 = r1 + r4;
+	r1 += -1;
+	p1 = r1;
+	p2 = r2;
+	lsetup (.Ls16_rml, .Ls16_rmle) lc0 = p5;
+.Ls16_rml:
+	b[p0] = r0;
+	b[p1] = r0;
+	p0 = p0 + p2;
+.Ls16_rmle:
+	p1 = p1 + p2;
+	jump .Ls16_done;
+
+.Ls16_rows_buf:
 	r0 = 1;
 	[sp + F_Y] = r0;
 .Ls16_row:
@@ -1140,11 +1279,11 @@ _bvb_sobel3x3_s16_asm:
 	rts;
 
 	/* .Lseg over rows 1 .. h-2 with the pipeline kept full from row to row: P0, P1, I0, I1
-	 * input row 2, P2 output row 1, P3 / P4 what the input / output pointers move from the end
-	 * of a row of groups to the next row, M3 the input stride, P5 = G - 1 >= 1, the last row's
-	 * input words (from a copy) and the row count less 2 in the frame; FP is used. The input pointers are used only in
-	 * a group's first 16 cycles and the output only in its second, so the input moves before a
-	 * row's first group and the output one group later: 6 cycles a row. */
+	 * input row 2 (input rows all at one byte offset), P2 output row 1, P5 = G - 1 >= 1; in
+	 * the frame the last row's input words (from a copy), the row count less 2 and the pointer
+	 * moves F_DIN, F_DOUT. FP is used. The input pointers serve only a group's first 16 cycles
+	 * and the output only its second, so the input moves before a row's first group and the
+	 * output one group later: 5 cycles a row. */
 .Lsegr:
 	/* prologue: the first group of the first row */
 	R0 = [P0++];                                                                                        /* Lw0 */
@@ -1182,10 +1321,9 @@ _bvb_sobel3x3_s16_asm:
 	R0 = R0 -|- R6;                                                                                     /* K2b */
 .Lu8r_ae:
 	R3 = ABS R5 (V);                                                                                    /* X3 */
-	p0 = p0 + p3;
-	p1 = p1 + p3;
-	i0 += m3;
-	i1 += m3;
+	fp = [sp + F_DIN];
+	p0 = p0 + fp;
+	p1 = p1 + fp;
 	fp = [sp + F_RM2];
 	cc = fp == 0;
 	if cc jump .Lu8r_bx;
@@ -1208,7 +1346,8 @@ _bvb_sobel3x3_s16_asm:
 	R2 = ABS R3 (V) || R6.H = W[I3++] || NOP;                                                           /* X2 t8 */
 	R0 = R0 -|- R6;                                                                                     /* K2b */
 	R3 = ABS R5 (V);                                                                                    /* X3 */
-	p2 = p2 + p4;
+	fp = [sp + F_DOUT];
+	p2 = p2 + fp;
 	lsetup (.Lu8r_i, .Lu8r_ie) lc0 = p5;
 .Lu8r_i:
 	R4 = ABS R0 (V) || R0 = [P0++] || NOP;                                                              /* X4 Lw0 */
@@ -1228,11 +1367,10 @@ _bvb_sobel3x3_s16_asm:
 	R0 = R0 -|- R6;                                                                                     /* K2b */
 .Lu8r_ie:
 	R3 = ABS R5 (V);                                                                                    /* X3 */
-	p0 = p0 + p3;
-	p1 = p1 + p3;
-	i0 += m3;
+	fp = [sp + F_DIN];
+	p0 = p0 + fp;
 .Lu8r_oe:
-	i1 += m3;
+	p1 = p1 + fp;
 .Lu8r_bx:
 	p0 = [sp + F_LP0];
 	p1 = [sp + F_LP1];
@@ -1252,7 +1390,8 @@ _bvb_sobel3x3_s16_asm:
 	R2 = ABS R3 (V) || R6.H = W[I3++] || NOP;                                                           /* X2 t8 */
 	R0 = R0 -|- R6;                                                                                     /* K2b */
 	R3 = ABS R5 (V);                                                                                    /* X3 */
-	p2 = p2 + p4;
+	fp = [sp + F_DOUT];
+	p2 = p2 + fp;
 	lsetup (.Lu8r_l, .Lu8r_le) lc0 = p5;
 .Lu8r_l:
 	R4 = ABS R0 (V) || R0 = [P0++] || NOP;                                                              /* X4 Lw0 */
@@ -1393,6 +1532,289 @@ _bvb_sobel3x3_s16_asm:
 	R7 = R1 +|+ R4, R4 = R1 -|- R4;                                                                     /* Q2 */
 	[P2++] = R7;                                                                                        /* SXB */
 	[P3++] = R4;                                                                                        /* SYB */
+	rts;
+
+	/* .Lseg16 and .Lseg16m from row to row, as .Lsegr (P3 gy and P4 mag rows too, F_DG,
+	 * F_DOUT their moves). */
+.Lsegr16:
+	/* prologue: the first group of the first row */
+	R0 = [P0++];                                                                                        /* Lw0 */
+	MNOP || R2 = [P1++] || R6.L = W[I2++];                                                              /* Lv0 s1 */
+	MNOP || R3 = [P1] || R5.L = W[I3++];                                                                /* Lv1 t1 */
+	R1 = [P0];                                                                                          /* Lw1 */
+	(R0, R3) = BYTEOP16P (R1:0, R3:2) || R1 = [I2++] || NOP;                                            /* A1 s2 */
+	R2 = [I2++];                                                                                        /* s3 */
+	R1 = R3 +|+ R1 || R6.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R0 +|+ R2 || R2.L = W[I2++] || [I3++] = R0;                                                    /* A3 s5 t3 */
+	R0 = R1 -|- R6 || R2.H = W[I2] || [I3++] = R1;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	MNOP || R3 = [I2 ++ M1] || R5.H = W[I3++];                                                          /* s8 t6 */
+	R3 = R3 -|- R5 || R5.L = W[I3++] || NOP;                                                            /* K2a t7 */
+	lsetup (.Ls16r_a, .Ls16r_ae) lc0 = p5;
+.Ls16r_a:
+	R4 = R0 +|+ R3, R3 = R0 -|- R3 || R0 = [P0++] || R5.H = W[I3++];                                    /* Q1 Lw0 t8 */
+	[P2++] = R4;                                                                                        /* SXA */
+	R4 = R2 -|- R5 || R2 = [P1++] || R6.L = W[I2++];                                                    /* K2b Lv0 s1 */
+	[P3++] = R3;                                                                                        /* SYA */
+	R7 = R1 +|+ R4, R4 = R1 -|- R4 || R3 = [P1] || R5.L = W[I3++];                                      /* Q2 Lv1 t1 */
+	R1 = [P0];                                                                                          /* Lw1 */
+	(R0, R3) = BYTEOP16P (R1:0, R3:2) || R1 = [I2++] || NOP;                                            /* A1 s2 */
+	MNOP || [P2++] = R7 || R2 = [I2++];                                                                 /* SXB s3 */
+	R1 = R3 +|+ R1 || R6.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R0 +|+ R2 || R2.L = W[I2++] || [I3++] = R0;                                                    /* A3 s5 t3 */
+	R0 = R1 -|- R6 || R2.H = W[I2] || [I3++] = R1;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	MNOP || R3 = [I2 ++ M1] || R5.H = W[I3++];                                                          /* s8 t6 */
+.Ls16r_ae:
+	R3 = R3 -|- R5 || [P3++] = R4 || R5.L = W[I3++];                                                    /* K2a SYB t7 */
+	fp = [sp + F_DIN];
+	p0 = p0 + fp;
+	p1 = p1 + fp;
+	fp = [sp + F_RM2];
+	cc = fp == 0;
+	if cc jump .Ls16r_bx;
+	lc1 = fp;
+	lsetup (.Ls16r_o, .Ls16r_oe) lc1;
+.Ls16r_o:
+	R4 = R0 +|+ R3, R3 = R0 -|- R3 || R0 = [P0++] || R5.H = W[I3++];                                    /* Q1 Lw0 t8 */
+	[P2++] = R4;                                                                                        /* SXA */
+	R4 = R2 -|- R5 || R2 = [P1++] || R6.L = W[I2++];                                                    /* K2b Lv0 s1 */
+	[P3++] = R3;                                                                                        /* SYA */
+	R7 = R1 +|+ R4, R4 = R1 -|- R4 || R3 = [P1] || R5.L = W[I3++];                                      /* Q2 Lv1 t1 */
+	R1 = [P0];                                                                                          /* Lw1 */
+	(R0, R3) = BYTEOP16P (R1:0, R3:2) || R1 = [I2++] || NOP;                                            /* A1 s2 */
+	MNOP || [P2++] = R7 || R2 = [I2++];                                                                 /* SXB s3 */
+	R1 = R3 +|+ R1 || R6.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R0 +|+ R2 || R2.L = W[I2++] || [I3++] = R0;                                                    /* A3 s5 t3 */
+	R0 = R1 -|- R6 || R2.H = W[I2] || [I3++] = R1;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	MNOP || R3 = [I2 ++ M1] || R5.H = W[I3++];                                                          /* s8 t6 */
+	R3 = R3 -|- R5 || [P3++] = R4 || R5.L = W[I3++];                                                    /* K2a SYB t7 */
+	fp = [sp + F_DG];
+	p2 = p2 + fp;
+	p3 = p3 + fp;
+	lsetup (.Ls16r_i, .Ls16r_ie) lc0 = p5;
+.Ls16r_i:
+	R4 = R0 +|+ R3, R3 = R0 -|- R3 || R0 = [P0++] || R5.H = W[I3++];                                    /* Q1 Lw0 t8 */
+	[P2++] = R4;                                                                                        /* SXA */
+	R4 = R2 -|- R5 || R2 = [P1++] || R6.L = W[I2++];                                                    /* K2b Lv0 s1 */
+	[P3++] = R3;                                                                                        /* SYA */
+	R7 = R1 +|+ R4, R4 = R1 -|- R4 || R3 = [P1] || R5.L = W[I3++];                                      /* Q2 Lv1 t1 */
+	R1 = [P0];                                                                                          /* Lw1 */
+	(R0, R3) = BYTEOP16P (R1:0, R3:2) || R1 = [I2++] || NOP;                                            /* A1 s2 */
+	MNOP || [P2++] = R7 || R2 = [I2++];                                                                 /* SXB s3 */
+	R1 = R3 +|+ R1 || R6.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R0 +|+ R2 || R2.L = W[I2++] || [I3++] = R0;                                                    /* A3 s5 t3 */
+	R0 = R1 -|- R6 || R2.H = W[I2] || [I3++] = R1;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	MNOP || R3 = [I2 ++ M1] || R5.H = W[I3++];                                                          /* s8 t6 */
+.Ls16r_ie:
+	R3 = R3 -|- R5 || [P3++] = R4 || R5.L = W[I3++];                                                    /* K2a SYB t7 */
+	fp = [sp + F_DIN];
+	p0 = p0 + fp;
+.Ls16r_oe:
+	p1 = p1 + fp;
+.Ls16r_bx:
+	p0 = [sp + F_LP0];
+	p1 = [sp + F_LP1];
+	R4 = R0 +|+ R3, R3 = R0 -|- R3 || R0 = [P0++] || R5.H = W[I3++];                                    /* Q1 Lw0 t8 */
+	[P2++] = R4;                                                                                        /* SXA */
+	R4 = R2 -|- R5 || R2 = [P1++] || R6.L = W[I2++];                                                    /* K2b Lv0 s1 */
+	[P3++] = R3;                                                                                        /* SYA */
+	R7 = R1 +|+ R4, R4 = R1 -|- R4 || R3 = [P1] || R5.L = W[I3++];                                      /* Q2 Lv1 t1 */
+	R1 = [P0];                                                                                          /* Lw1 */
+	(R0, R3) = BYTEOP16P (R1:0, R3:2) || R1 = [I2++] || NOP;                                            /* A1 s2 */
+	MNOP || [P2++] = R7 || R2 = [I2++];                                                                 /* SXB s3 */
+	R1 = R3 +|+ R1 || R6.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R0 +|+ R2 || R2.L = W[I2++] || [I3++] = R0;                                                    /* A3 s5 t3 */
+	R0 = R1 -|- R6 || R2.H = W[I2] || [I3++] = R1;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	MNOP || R3 = [I2 ++ M1] || R5.H = W[I3++];                                                          /* s8 t6 */
+	R3 = R3 -|- R5 || [P3++] = R4 || R5.L = W[I3++];                                                    /* K2a SYB t7 */
+	fp = [sp + F_DG];
+	p2 = p2 + fp;
+	p3 = p3 + fp;
+	lsetup (.Ls16r_l, .Ls16r_le) lc0 = p5;
+.Ls16r_l:
+	R4 = R0 +|+ R3, R3 = R0 -|- R3 || R0 = [P0++] || R5.H = W[I3++];                                    /* Q1 Lw0 t8 */
+	[P2++] = R4;                                                                                        /* SXA */
+	R4 = R2 -|- R5 || R2 = [P1++] || R6.L = W[I2++];                                                    /* K2b Lv0 s1 */
+	[P3++] = R3;                                                                                        /* SYA */
+	R7 = R1 +|+ R4, R4 = R1 -|- R4 || R3 = [P1] || R5.L = W[I3++];                                      /* Q2 Lv1 t1 */
+	R1 = [P0];                                                                                          /* Lw1 */
+	(R0, R3) = BYTEOP16P (R1:0, R3:2) || R1 = [I2++] || NOP;                                            /* A1 s2 */
+	MNOP || [P2++] = R7 || R2 = [I2++];                                                                 /* SXB s3 */
+	R1 = R3 +|+ R1 || R6.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R0 +|+ R2 || R2.L = W[I2++] || [I3++] = R0;                                                    /* A3 s5 t3 */
+	R0 = R1 -|- R6 || R2.H = W[I2] || [I3++] = R1;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	MNOP || R3 = [I2 ++ M1] || R5.H = W[I3++];                                                          /* s8 t6 */
+.Ls16r_le:
+	R3 = R3 -|- R5 || [P3++] = R4 || R5.L = W[I3++];                                                    /* K2a SYB t7 */
+	/* epilogue: the last group of the last row */
+	R4 = R0 +|+ R3, R3 = R0 -|- R3 || R5.H = W[I3++] || NOP;                                            /* Q1 t8 */
+	[P2++] = R4;                                                                                        /* SXA */
+	R4 = R2 -|- R5;                                                                                     /* K2b */
+	[P3++] = R3;                                                                                        /* SYA */
+	R7 = R1 +|+ R4, R4 = R1 -|- R4;                                                                     /* Q2 */
+	[P2++] = R7;                                                                                        /* SXB */
+	[P3++] = R4;                                                                                        /* SYB */
+	rts;
+.Lsegr16m:
+	/* prologue: the first group of the first row */
+	R2 = [P1++];                                                                                        /* Lv0 */
+	R4.L = W[I2++];                                                                                     /* s1 */
+	R3 = [P1];                                                                                          /* Lv1 */
+	R0 = [P0++];                                                                                        /* Lw0 */
+	MNOP || R1 = [P0] || R7 = [I2++];                                                                   /* Lw1 s2 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || R0.L = W[I3++];                                 /* A1 s3 t1 */
+	R7 = R3 +|+ R7 || R4.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R1 +|+ R2 || R2.L = W[I2++] || [I3++] = R1;                                                    /* A3 s5 t3 */
+	R4 = R7 -|- R4 || R2.H = W[I2] || [I3++] = R7;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	MNOP || R5 = [I2 ++ M1] || R0.H = W[I3++];                                                          /* s8 t6 */
+	R5 = R5 -|- R0 || R0.L = W[I3++] || NOP;                                                            /* K2a t7 */
+	R5 = R4 +|+ R5, R4 = R4 -|- R5 || R0.H = W[I3++] || NOP;                                            /* Q1 t8 */
+	R0 = R2 -|- R0 || [P2++] = R5 || NOP;                                                               /* K2b SXA */
+	R3 = R1 +|+ R0, R0 = R1 -|- R0 || [P3++] = R4 || NOP;                                               /* Q2 SYA */
+	R1 = ABS R5 (V) || [P2++] = R3 || NOP;                                                              /* XA SXB */
+	lsetup (.Ls16rm_a, .Ls16rm_ae) lc0 = p5;
+.Ls16rm_a:
+	R4 = ABS R4 (V) || R2 = [P1++] || NOP;                                                              /* YA Lv0 */
+	R1 = R1 +|+ R4 || [P3++] = R0 || R4.L = W[I2++];                                                    /* SA SYB s1 */
+	R5 = ABS R3 (V) || R3 = [P1] || NOP;                                                                /* XB Lv1 */
+	R0 = ABS R0 (V);                                                                                    /* YB */
+	R7 = R5 +|+ R0 || R6 = [SP] || NOP;                                                                 /* SB LC */
+	R5 = MIN (R1, R6) (V) || R0 = [P0++] || NOP;                                                        /* NA Lw0 */
+	R6 = MIN (R7, R6) (V) || R1 = [P0] || R7 = [I2++];                                                  /* NB Lw1 s2 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || R0.L = W[I3++];                                 /* A1 s3 t1 */
+	R7 = R3 +|+ R7 || R4.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R1 +|+ R2 || R2.L = W[I2++] || [I3++] = R1;                                                    /* A3 s5 t3 */
+	R4 = R7 -|- R4 || R2.H = W[I2] || [I3++] = R7;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	R3 = BYTEPACK (R5, R6) || R5 = [I2 ++ M1] || R0.H = W[I3++];                                        /* PK s8 t6 */
+	R5 = R5 -|- R0 || [P4++] = R3 || R0.L = W[I3++];                                                    /* K2a SM t7 */
+	R5 = R4 +|+ R5, R4 = R4 -|- R5 || R0.H = W[I3++] || NOP;                                            /* Q1 t8 */
+	R0 = R2 -|- R0 || [P2++] = R5 || NOP;                                                               /* K2b SXA */
+	R3 = R1 +|+ R0, R0 = R1 -|- R0 || [P3++] = R4 || NOP;                                               /* Q2 SYA */
+.Ls16rm_ae:
+	R1 = ABS R5 (V) || [P2++] = R3 || NOP;                                                              /* XA SXB */
+	fp = [sp + F_DIN];
+	p0 = p0 + fp;
+	p1 = p1 + fp;
+	fp = [sp + F_DG];
+	p2 = p2 + fp;
+	fp = [sp + F_RM2];
+	cc = fp == 0;
+	if cc jump .Ls16rm_bx;
+	lc1 = fp;
+	lsetup (.Ls16rm_o, .Ls16rm_oe) lc1;
+.Ls16rm_o:
+	R4 = ABS R4 (V) || R2 = [P1++] || NOP;                                                              /* YA Lv0 */
+	R1 = R1 +|+ R4 || [P3++] = R0 || R4.L = W[I2++];                                                    /* SA SYB s1 */
+	fp = [sp + F_DG];
+	p3 = p3 + fp;
+	R5 = ABS R3 (V) || R3 = [P1] || NOP;                                                                /* XB Lv1 */
+	R0 = ABS R0 (V);                                                                                    /* YB */
+	R7 = R5 +|+ R0 || R6 = [SP] || NOP;                                                                 /* SB LC */
+	R5 = MIN (R1, R6) (V) || R0 = [P0++] || NOP;                                                        /* NA Lw0 */
+	R6 = MIN (R7, R6) (V) || R1 = [P0] || R7 = [I2++];                                                  /* NB Lw1 s2 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || R0.L = W[I3++];                                 /* A1 s3 t1 */
+	R7 = R3 +|+ R7 || R4.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R1 +|+ R2 || R2.L = W[I2++] || [I3++] = R1;                                                    /* A3 s5 t3 */
+	R4 = R7 -|- R4 || R2.H = W[I2] || [I3++] = R7;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	R3 = BYTEPACK (R5, R6) || R5 = [I2 ++ M1] || R0.H = W[I3++];                                        /* PK s8 t6 */
+	R5 = R5 -|- R0 || [P4++] = R3 || R0.L = W[I3++];                                                    /* K2a SM t7 */
+	R5 = R4 +|+ R5, R4 = R4 -|- R5 || R0.H = W[I3++] || NOP;                                            /* Q1 t8 */
+	R0 = R2 -|- R0 || [P2++] = R5 || NOP;                                                               /* K2b SXA */
+	R3 = R1 +|+ R0, R0 = R1 -|- R0 || [P3++] = R4 || NOP;                                               /* Q2 SYA */
+	R1 = ABS R5 (V) || [P2++] = R3 || NOP;                                                              /* XA SXB */
+	fp = [sp + F_DOUT];
+	p4 = p4 + fp;
+	lsetup (.Ls16rm_i, .Ls16rm_ie) lc0 = p5;
+.Ls16rm_i:
+	R4 = ABS R4 (V) || R2 = [P1++] || NOP;                                                              /* YA Lv0 */
+	R1 = R1 +|+ R4 || [P3++] = R0 || R4.L = W[I2++];                                                    /* SA SYB s1 */
+	R5 = ABS R3 (V) || R3 = [P1] || NOP;                                                                /* XB Lv1 */
+	R0 = ABS R0 (V);                                                                                    /* YB */
+	R7 = R5 +|+ R0 || R6 = [SP] || NOP;                                                                 /* SB LC */
+	R5 = MIN (R1, R6) (V) || R0 = [P0++] || NOP;                                                        /* NA Lw0 */
+	R6 = MIN (R7, R6) (V) || R1 = [P0] || R7 = [I2++];                                                  /* NB Lw1 s2 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || R0.L = W[I3++];                                 /* A1 s3 t1 */
+	R7 = R3 +|+ R7 || R4.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R1 +|+ R2 || R2.L = W[I2++] || [I3++] = R1;                                                    /* A3 s5 t3 */
+	R4 = R7 -|- R4 || R2.H = W[I2] || [I3++] = R7;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	R3 = BYTEPACK (R5, R6) || R5 = [I2 ++ M1] || R0.H = W[I3++];                                        /* PK s8 t6 */
+	R5 = R5 -|- R0 || [P4++] = R3 || R0.L = W[I3++];                                                    /* K2a SM t7 */
+	R5 = R4 +|+ R5, R4 = R4 -|- R5 || R0.H = W[I3++] || NOP;                                            /* Q1 t8 */
+	R0 = R2 -|- R0 || [P2++] = R5 || NOP;                                                               /* K2b SXA */
+	R3 = R1 +|+ R0, R0 = R1 -|- R0 || [P3++] = R4 || NOP;                                               /* Q2 SYA */
+.Ls16rm_ie:
+	R1 = ABS R5 (V) || [P2++] = R3 || NOP;                                                              /* XA SXB */
+	fp = [sp + F_DIN];
+	p0 = p0 + fp;
+	p1 = p1 + fp;
+	fp = [sp + F_DG];
+.Ls16rm_oe:
+	p2 = p2 + fp;
+.Ls16rm_bx:
+	p0 = [sp + F_LP0];
+	p1 = [sp + F_LP1];
+	R4 = ABS R4 (V) || R2 = [P1++] || NOP;                                                              /* YA Lv0 */
+	R1 = R1 +|+ R4 || [P3++] = R0 || R4.L = W[I2++];                                                    /* SA SYB s1 */
+	fp = [sp + F_DG];
+	p3 = p3 + fp;
+	R5 = ABS R3 (V) || R3 = [P1] || NOP;                                                                /* XB Lv1 */
+	R0 = ABS R0 (V);                                                                                    /* YB */
+	R7 = R5 +|+ R0 || R6 = [SP] || NOP;                                                                 /* SB LC */
+	R5 = MIN (R1, R6) (V) || R0 = [P0++] || NOP;                                                        /* NA Lw0 */
+	R6 = MIN (R7, R6) (V) || R1 = [P0] || R7 = [I2++];                                                  /* NB Lw1 s2 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || R0.L = W[I3++];                                 /* A1 s3 t1 */
+	R7 = R3 +|+ R7 || R4.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R1 +|+ R2 || R2.L = W[I2++] || [I3++] = R1;                                                    /* A3 s5 t3 */
+	R4 = R7 -|- R4 || R2.H = W[I2] || [I3++] = R7;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	R3 = BYTEPACK (R5, R6) || R5 = [I2 ++ M1] || R0.H = W[I3++];                                        /* PK s8 t6 */
+	R5 = R5 -|- R0 || [P4++] = R3 || R0.L = W[I3++];                                                    /* K2a SM t7 */
+	R5 = R4 +|+ R5, R4 = R4 -|- R5 || R0.H = W[I3++] || NOP;                                            /* Q1 t8 */
+	R0 = R2 -|- R0 || [P2++] = R5 || NOP;                                                               /* K2b SXA */
+	R3 = R1 +|+ R0, R0 = R1 -|- R0 || [P3++] = R4 || NOP;                                               /* Q2 SYA */
+	R1 = ABS R5 (V) || [P2++] = R3 || NOP;                                                              /* XA SXB */
+	fp = [sp + F_DOUT];
+	p4 = p4 + fp;
+	lsetup (.Ls16rm_l, .Ls16rm_le) lc0 = p5;
+.Ls16rm_l:
+	R4 = ABS R4 (V) || R2 = [P1++] || NOP;                                                              /* YA Lv0 */
+	R1 = R1 +|+ R4 || [P3++] = R0 || R4.L = W[I2++];                                                    /* SA SYB s1 */
+	R5 = ABS R3 (V) || R3 = [P1] || NOP;                                                                /* XB Lv1 */
+	R0 = ABS R0 (V);                                                                                    /* YB */
+	R7 = R5 +|+ R0 || R6 = [SP] || NOP;                                                                 /* SB LC */
+	R5 = MIN (R1, R6) (V) || R0 = [P0++] || NOP;                                                        /* NA Lw0 */
+	R6 = MIN (R7, R6) (V) || R1 = [P0] || R7 = [I2++];                                                  /* NB Lw1 s2 */
+	(R1, R3) = BYTEOP16P (R1:0, R3:2) || R2 = [I2++] || R0.L = W[I3++];                                 /* A1 s3 t1 */
+	R7 = R3 +|+ R7 || R4.H = W[I2++] || [I3++] = R3;                                                    /* A2 s4 t2 */
+	R3 = R1 +|+ R2 || R2.L = W[I2++] || [I3++] = R1;                                                    /* A3 s5 t3 */
+	R4 = R7 -|- R4 || R2.H = W[I2] || [I3++] = R7;                                                      /* K1a s6 t4 */
+	R1 = R3 -|- R2 || R2 = [I2 ++ M2] || [I3--] = R3;                                                   /* K1b s7 t5 */
+	R3 = BYTEPACK (R5, R6) || R5 = [I2 ++ M1] || R0.H = W[I3++];                                        /* PK s8 t6 */
+	R5 = R5 -|- R0 || [P4++] = R3 || R0.L = W[I3++];                                                    /* K2a SM t7 */
+	R5 = R4 +|+ R5, R4 = R4 -|- R5 || R0.H = W[I3++] || NOP;                                            /* Q1 t8 */
+	R0 = R2 -|- R0 || [P2++] = R5 || NOP;                                                               /* K2b SXA */
+	R3 = R1 +|+ R0, R0 = R1 -|- R0 || [P3++] = R4 || NOP;                                               /* Q2 SYA */
+.Ls16rm_le:
+	R1 = ABS R5 (V) || [P2++] = R3 || NOP;                                                              /* XA SXB */
+	/* epilogue: the last group of the last row */
+	R4 = ABS R4 (V);                                                                                    /* YA */
+	R1 = R1 +|+ R4 || [P3++] = R0 || NOP;                                                               /* SA SYB */
+	R5 = ABS R3 (V);                                                                                    /* XB */
+	R0 = ABS R0 (V);                                                                                    /* YB */
+	R7 = R5 +|+ R0 || R6 = [SP] || NOP;                                                                 /* SB LC */
+	R5 = MIN (R1, R6) (V);                                                                              /* NA */
+	R6 = MIN (R7, R6) (V);                                                                              /* NB */
+	R3 = BYTEPACK (R5, R6);                                                                             /* PK */
+	[P4++] = R3;                                                                                        /* SM */
 	rts;
 
 	/* The same with the magnitude to P4: XA .. YB ABS, SA, SB |gx| + |gy|, LC the constant
