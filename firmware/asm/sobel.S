@@ -28,29 +28,33 @@
  *
  * Lower bound (16 and 18 instructions per 4 pixels above, one 32-bit ALU/MAC instruction per
  * cycle): 4 cycles per interior pixel for u8, 4.5 for s16 with the magnitude. Memory does not
- * bind: per group u8 issues 18 loads, 5 stores and 2 pointer steps in 16 cycles (32 slots), s16
- * with the magnitude 17 loads and 9 stores in 18. Why
- * not fewer: each output needs two signed 16-bit gradient values (1 dual-lane instruction per
- * pixel), two absolute values (1 per pixel), their combination and clamp (0.5 + 0.5), the pack
- * (0.25), and a new box sum (0.5 per pixel for the 16-bit add, 0.25 for the byte pair sums);
- * only the add/sub pairs of the gradients fit the quad instruction. (ADI's dual-MAC 3x3
- * convolution: 4.5 cycles per pixel for one mask.) Without the magnitude, s16 needs 24 memory
- * slots per group (12 cycles); its loop takes 14 (8 data registers).
+ * bind: per group u8 issues 18 loads, 5 stores and 2 pointer steps in 16 cycles (32 slots),
+ * s16 with the magnitude 17 loads and 9 stores in 18. Why not fewer: each output needs two
+ * signed 16-bit gradient values (1 dual-lane instruction per pixel), two absolute values (1 per
+ * pixel), their combination and clamp (0.5 + 0.5), the pack (0.25), and a new box sum (0.5 per
+ * pixel for the 16-bit add, 0.25 for the byte pair sums); only the add/sub pairs of gx and gy
+ * fit the quad instruction. (ADI's dual-MAC 3x3 convolution: 4.5 cycles per pixel for one
+ * mask.) Without the magnitude, s16 needs 24 memory slots per group (12 cycles); its loop
+ * takes 14 (8 data registers).
  *
  * Measured (bfbench bench, frames contiguous: strides == width):
- *   sobel3x3_u8    160x120      76,586 cycles  3.99 per pixel  (C -O2: 1,946,028, 25.4x)
- *                  320x240     306,346         3.99            (C: 7,885,188, 25.7x)
- *                  640x480   1,226,666         3.99            (C: 31,744,308, 25.9x)
- *   sobel3x3_s16   160x120      87,420         4.55 with mag   (C: 2,045,839, 23.4x)
- *                  320x240     347,140         4.52            (C: 8,276,799, 23.8x)
- *                  640x480   1,384,980         4.51            (C: 33,295,519, 24.0x)
- *   The inner loop is 16 (u8), 14 or 18 (s16) cycles per 4 pixels; the rest is the first row
- *   of blocks (9 cycles per 4 pixels), the ring's lane masks, the zero rows and, for s16, the
- *   border columns (7 cycles per row). Other layouts go row by row (about 100 cycles a row on
- *   top, plus a copy from the row buffer when the output row is not 4-byte aligned or the
- *   width not a multiple of 4): u8 at 160x120 with 16 bytes of row padding 88,513 cycles (4.61
- *   per pixel), with dst one byte off 127,244 (6.63); s16 with gx/gy 2 bytes off 186,283
- *   (9.70).
+ *   sobel3x3_u8    160x120      76,588 cycles  3.99 per pixel  (C -O2: 1,946,028, 25.4x)
+ *                  320x240     306,348         3.99            (C: 7,885,188, 25.7x)
+ *                  640x480   1,226,668         3.99            (C: 31,744,308, 25.9x)
+ *   sobel3x3_s16   160x120      87,422         4.55 with mag   (C: 2,045,839, 23.4x)
+ *                  320x240     347,142         4.52            (C: 8,276,799, 23.8x)
+ *                  640x480   1,384,982         4.51            (C: 33,295,519, 24.0x)
+ *                  without mag: 68,076 / 270,076 / 1,077,276 (3.55 / 3.52 / 3.51 per pixel)
+ *   The inner loop is 16 (u8), 14 or 18 (s16) cycles per 4 pixels, run as one stream over the
+ *   frame; the rest is the first row of blocks (9 cycles per 4 pixels), the ring's lane masks,
+ *   the zero rows and, for s16, the border columns (7 cycles a row).
+ *   Other layouts (same method, measured with the bench's frames re-laid out):
+ *   - rows padded, strides multiples of 4, outputs 4-byte aligned, width a multiple of 4: the
+ *     loop runs on from row to row, only its pointers move (5-8 cycles a row): u8 at 160x120
+ *     with 16 bytes of padding 77,279 (4.02 per pixel), s16 88,696 (4.62);
+ *   - anything else goes row by row through row buffers (about 100 cycles a row, plus the
+ *     copy out): u8 with strides of 162: 95,624 (4.98); dst 2 bytes off: 102,721 (5.35), one
+ *     byte off: 112,161 (5.84); s16 with gx/gy 2 bytes off: 164,129 (8.55).
  *
  * Registers in the loops: R0-R3 the input words (BYTEOP16P reads R1:0 and R3:2), R4-R7 the
  * rest; P0, P1 the aligned input words, P2 (P3, P4) outputs, P5 the count; I0, I1 hold only the
