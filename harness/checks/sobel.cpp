@@ -126,9 +126,10 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
 // interior pixels, one ALU/MAC instruction per cycle:
 //   u8:  per 4 pixels, 1 BYTEOP16P + 2 box-sum adds + 4 subtractions + 4 ABS + 2 MAX + 2 MIN
 //        + 1 BYTEPACK = 16 instructions: 4 cycles per pixel.
-//   s16: the same up to the subtractions (7), + 2 quad add/subtract for gx and gy, and for the
-//        magnitude 4 ABS + 2 adds + 2 MIN + 1 BYTEPACK: 18 instructions per 4 pixels; its 29
-//        loads and stores per 4 pixels fit the 36 slots of 18 issues, so 4.5 cycles per pixel.
+//   s16 (benched with the magnitude): the same up to the subtractions (7), + 2 quad
+//        add/subtract for gx and gy, and for the magnitude 4 ABS + 2 adds + 2 MIN + 1 BYTEPACK:
+//        18 instructions per 4 pixels; its 26 loads and stores fit the 36 slots of 18 issues,
+//        so 4.5 cycles per pixel.
 double lower_bound(const std::string &kernel, int w, int h) {
   const double interior = double(w - 2) * (h - 2);
   return kernel == "sobel3x3_u8" ? 4.0 * interior : 4.5 * interior;
