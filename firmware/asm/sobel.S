@@ -35,7 +35,9 @@
  * pixel for the 16-bit add, 0.25 for the byte pair sums); only the add/sub pairs of gx and gy
  * fit the quad instruction. (ADI's dual-MAC 3x3 convolution: 4.5 cycles per pixel for one
  * mask.) Without the magnitude, s16 needs 24 memory slots per group (12 cycles); its loop
- * takes 14 (8 data registers).
+ * takes 14 (8 data registers). The schedules assume the simulator's timing: load-use
+ * latencies and L1 sub-bank conflicts (I2 and I3 load in the same cycle; on hardware the two
+ * rows of the ring would go to different 4 KB sub-banks) are not modelled and not avoided.
  *
  * Measured (bfbench bench, frames contiguous: strides == width):
  *   sobel3x3_u8    160x120      76,588 cycles  3.99 per pixel  (C -O2: 1,946,028, 25.4x)
