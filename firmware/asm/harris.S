@@ -407,3 +407,315 @@ _bvb_harris_response_asm:
 .Lg_done:
 	rts;
 	.size _bvb_harris_response_asm, . - _bvb_harris_response_asm
+
+/* Harris candidates (bvb_harris_nms in bvb/harris.h), bit-exact with firmware/c/harris.c.
+ *
+ * Rows are taken in pairs and cut into 2x2 blocks: only the block's largest value (the first in
+ * raster order among equals) can be a candidate, since its block-mates are among its neighbours.
+ * The fast path tests the block's maximum against the threshold (three MAX, a compare, a branch
+ * not taken: 5 issues per 4 pixels, the loads riding along, the next block loaded ahead). A
+ * block above the threshold picks its winner with three compares and conditional moves and
+ * gives it the full test, branch-free:
+ *   max(u[x-1], u[x], u[x+1], r[x-1], max(r[x+1], d[x-1], d[x], d[x+1]) - 1) < v
+ * (the raster-order tie rule in one comparison; the threshold holds already: the winner is the
+ * block's maximum). Candidates of the lower row wait in scratch until the upper row is done, so
+ * the list comes out in raster order as the C scan leaves it. An odd last column or row, and
+ * maps narrower than 8 elements per row, take an exact per-pixel path. Values must be above
+ * INT32_MIN so that "- 1" cannot wrap. The loads ahead read up to 3 elements past the end of a
+ * row pair: inside the next row, which exists.
+ *
+ * Cycles: see harness/checks/harris.cpp. TODO */
+#define C_W      -4
+#define C_PAIRS  -8    /* row pairs left */
+#define C_ROW    -12   /* the upper row of the pair, + 4 (x = 1) */
+#define C_KEY    -16   /* y << 16 | 1 for that row */
+#define C_NB     -20   /* 2x2 blocks per row pair: (width - 2) >> 1 */
+#define C_ODDW   -24   /* (width - 2) & 1: a last column x = width - 2 outside the blocks */
+#define C_ODDH   -28   /* (height - 2) & 1: a last row y = height - 2 outside the pairs */
+#define C_SIZE   28
+/* the caller's arguments, FP-relative after the push and LINK */
+#define C_ARG_STRIDE  48
+#define C_ARG_THR     52
+#define C_ARG_CAND    56
+#define C_ARG_COUNT   60
+#define C_ARG_SCRATCH 64
+
+	.global _bvb_harris_nms_asm
+	.type _bvb_harris_nms_asm, STT_FUNC
+_bvb_harris_nms_asm:
+	[--sp] = (r7:4, p5:3);
+	link C_SIZE;
+	[fp + C_W] = r1;
+	r3 = [fp + C_ARG_STRIDE];
+	r3 <<= 2;
+	m3 = r3;                 /* stride in bytes */
+	r2 += -2;
+	r0 = r0 + r3;
+	r0 += 4;
+	[fp + C_ROW] = r0;
+	r3 = 1;
+	r0 = r2 & r3;
+	[fp + C_ODDH] = r0;
+	r2 >>= 1;
+	[fp + C_PAIRS] = r2;
+	r0 = 1;
+	r0 <<= 16;
+	r0 += 1;
+	[fp + C_KEY] = r0;       /* y << 16 | x for y = 1, x = 1 */
+	r1 += -2;
+	r0 = r1 & r3;
+	[fp + C_ODDW] = r0;
+	r1 >>= 1;
+	[fp + C_NB] = r1;
+	r7 = [fp + C_ARG_THR];
+	r6 = -1;
+	p5 = [fp + C_ARG_CAND];
+	p1 = -4;
+	m1 = -4;
+	m2 = -16;
+
+	r0 = [fp + C_PAIRS];
+	cc = r0 == 0;
+	if cc jump .Lc_last_row;
+.Lc_pair:
+	r0 = [fp + C_ROW];
+	b0 = r0;
+	r1 = [fp + C_KEY];
+	b1 = r1;
+	r2 = [fp + C_ARG_SCRATCH];
+	p3 = r2;                 /* the lower row's candidates wait here */
+	r1 = m3;
+	r2 = 32;
+	cc = r1 < r2;
+	if cc jump .Lc_narrow;
+	p2 = [fp + C_NB];
+	cc = p2 == 0;
+	if cc jump .Lc_pair_end;
+	i0 = r0;
+	r0 = r0 + r1;
+	i1 = r0;
+	mnop || r0 = [i0++] || r2 = [i1++];
+	mnop || r1 = [i0++] || r3 = [i1++];
+	r4 = max (r0, r2) || r0 = [i0++] || r2 = [i1++];
+	r5 = max (r1, r3) || r1 = [i0++] || r3 = [i1++];
+	lsetup (.Lc_b_s, .Lc_b_e) lc0 = p2;
+.Lc_b_s: r4 = max (r4, r5);
+	cc = r4 <= r7;
+	if !cc jump .Lc_slow;
+.Lc_back:
+	r4 = max (r0, r2) || r0 = [i0++] || r2 = [i1++];
+.Lc_b_e: r5 = max (r1, r3) || r1 = [i0++] || r3 = [i1++];
+
+.Lc_pair_end:
+	/* the upper row's last column, then the lower row's waiting candidates, then its last
+	 * column: raster order */
+	r0 = [fp + C_ODDW];
+	cc = r0 == 0;
+	if cc jump 1f;
+	r0 = [fp + C_NB];
+	r0 <<= 3;
+	r1 = b0;
+	r0 = r0 + r1;
+	p2 = 1;
+	call .Lc_pix;
+1:	r0 = [fp + C_ARG_SCRATCH];
+	r1 = p3;
+	r1 = r1 - r0;
+	r1 >>= 2;
+	cc = r1 == 0;
+	if cc jump 2f;
+	i2 = r0;
+	p2 = r1;
+	lsetup (3f, 5f) lc1 = p2;
+3:	r0 = [i2++];
+5:	[p5++] = r0;
+2:
+	r0 = [fp + C_ODDW];
+	cc = r0 == 0;
+	if cc jump 4f;
+	r0 = b0;
+	r1 = m3;
+	r0 = r0 + r1;
+	b0 = r0;
+	r1 = b1;
+	r2 = 1;
+	r2 <<= 16;
+	r1 = r1 + r2;
+	b1 = r1;
+	r1 = [fp + C_NB];
+	r1 <<= 3;
+	r0 = r0 + r1;
+	p2 = 1;
+	call .Lc_pix;
+4:
+.Lc_next_pair:
+	r0 = [fp + C_ROW];
+	r1 = m3;
+	r1 <<= 1;
+	r0 = r0 + r1;
+	[fp + C_ROW] = r0;
+	r0 = [fp + C_KEY];
+	r1 = 2;
+	r1 <<= 16;
+	r0 = r0 + r1;
+	[fp + C_KEY] = r0;
+	r0 = [fp + C_PAIRS];
+	r0 += -1;
+	[fp + C_PAIRS] = r0;
+	cc = r0 == 0;
+	if !cc jump .Lc_pair;
+
+.Lc_last_row:
+	r0 = [fp + C_ODDH];
+	cc = r0 == 0;
+	if cc jump .Lc_done;
+	r0 = [fp + C_ROW];
+	b0 = r0;
+	r1 = [fp + C_KEY];
+	b1 = r1;
+	r1 = [fp + C_W];
+	r1 += -2;
+	p2 = r1;
+	call .Lc_pix;
+.Lc_done:
+	r0 = [fp + C_ARG_CAND];
+	r1 = p5;
+	r0 = r1 - r0;
+	r0 >>= 3;
+	p0 = [fp + C_ARG_COUNT];
+	[p0] = r0;
+	unlink;
+	(r7:4, p5:3) = [sp++];
+	rts;
+
+/* Narrow maps: both rows of the pair through the per-pixel path. */
+.Lc_narrow:
+	r0 = b0;
+	r1 = [fp + C_W];
+	r1 += -2;
+	p2 = r1;
+	call .Lc_pix;
+	r0 = b0;
+	r1 = m3;
+	r0 = r0 + r1;
+	b0 = r0;
+	r1 = b1;
+	r2 = 1;
+	r2 <<= 16;
+	r1 = r1 + r2;
+	b1 = r1;
+	r1 = [fp + C_W];
+	r1 += -2;
+	p2 = r1;
+	call .Lc_pix;
+	jump .Lc_next_pair;
+
+/* A 2x2 block above the threshold: its upper pair is 16 bytes behind I0, its lower pair 16
+ * behind I1. Leaves R0-R3 holding the next block and I0, I1 after it, as the loop expects. */
+.Lc_slow:
+	i0 += m2;
+	i1 += m2;
+	mnop || r0 = [i0++] || r2 = [i1++];     /* a, c */
+	mnop || r1 = [i0++] || r3 = [i1++];     /* b, d */
+	r4 = 0;
+	r5 = 4;
+	cc = r0 < r1;                            /* the winner, raster-first among equals */
+	if cc r0 = r1;
+	if cc r4 = r5;
+	r5 = m3;
+	r1 = r5;
+	r1 += 4;
+	cc = r2 < r3;
+	if cc r2 = r3;
+	if cc r5 = r1;
+	cc = r0 < r2;
+	if cc r0 = r2;
+	if cc r4 = r5;                           /* R0 its value, R4 its offset from the block */
+	r1 = i0;
+	r1 += -12;                               /* the block's upper-left pixel - 4 */
+	r1 = r1 + r4;                            /* the winner - 4 */
+	p0 = r1;
+	r5 = m3;
+	r2 = r1 - r5;
+	i2 = r2;                                 /* the row above */
+	r2 = r1 + r5;
+	i3 = r2;                                 /* the row below */
+	mnop || r1 = [i2++] || r2 = [i3++];      /* u0, d0 */
+	mnop || r3 = [i2++] || r5 = [i3++];      /* u1, d1 */
+	r1 = max (r1, r3) || r3 = [i2++];        /* u2 */
+	r2 = max (r2, r5) || r5 = [i3++];        /* d2 */
+	r1 = max (r1, r3) || r3 = [p0++];        /* l */
+	r2 = max (r2, r5) || r5 = [p0++];        /* (v) */
+	r1 = max (r1, r3) || r3 = [p0];          /* r */
+	r2 = max (r2, r3);
+	r2 = r2 + r6 (ns);
+	r1 = max (r1, r2);
+	cc = r1 < r0;
+	if cc jump .Lc_found;
+.Lc_resume:
+	mnop || r0 = [i0++] || r2 = [i1++];      /* the next block, as the loop left it */
+	mnop || r1 = [i0++] || r3 = [i1++];
+	jump .Lc_back;
+/* The winner is a candidate: into the list if it is in the upper row, else to wait in scratch. */
+.Lc_found:
+	r1 = i0;
+	r1 += -8;
+	r2 = b0;
+	r1 = r1 - r2;
+	r1 >>= 2;                                /* x0 - 1 */
+	r2 = b1;
+	r1 = r1 + r2;                            /* the key of the block's upper-left pixel */
+	r2 = 8;
+	cc = r4 < r2;
+	if !cc jump 1f;
+	r4 >>= 2;                                /* upper row: offset 0 or 4 */
+	r1 = r1 + r4;
+	[p5++] = r1;
+	[p5++] = r0;
+	jump .Lc_resume;
+1:	r2 = m3;                                 /* lower row: offset stride or stride + 4 */
+	r4 = r4 - r2;
+	r4 >>= 2;
+	r1 = r1 + r4;
+	r2 = 1;
+	r2 <<= 16;
+	r1 = r1 + r2;
+	[p3++] = r1;
+	[p3++] = r0;
+	jump .Lc_resume;
+
+/* The exact per-pixel path: P2 pixels from the one at R0, in the row whose x = 1 is at B0 and
+ * whose key is B1; appends candidates at P5. Keeps R6, R7, I0, I1, P1, P3, M1-M3, B0, B1. */
+.Lc_pix:
+	r1 = b0;
+	r2 = r0 - r1;
+	r2 >>= 2;
+	r1 = b1;
+	r2 = r2 + r1;
+	p4 = r2;                 /* the key of the first pixel */
+	r1 = m3;
+	r0 += -4;
+	r2 = r0 - r1;
+	i2 = r2;
+	r2 = r0 + r1;
+	i3 = r2;
+	p0 = r0;
+	lsetup (.Lc_p_s, .Lc_p_e) lc1 = p2;
+.Lc_p_s: mnop || r0 = [i2++] || r1 = [i3++];
+	r0 = max (r0, r7) || r2 = [i2++] || r3 = [i3++];
+	r0 = max (r0, r2) || r2 = [i2++m1] || r4 = [i3++m1];
+	r0 = max (r0, r2) || r2 = [p0++];
+	r1 = max (r1, r3) || r3 = [p0++];
+	r0 = max (r0, r2) || r2 = [p0++p1];
+	r1 = max (r1, r4);
+	r1 = max (r1, r2);
+	r1 = r1 + r6 (ns);
+	r0 = max (r0, r1);
+	cc = r0 < r3;
+	if !cc jump .Lc_p_e (bp);
+	r0 = p4;
+	[p5++] = r0;
+	[p5++] = r3;
+.Lc_p_e: p4 += 1;
+	rts;
+	.size _bvb_harris_nms_asm, . - _bvb_harris_nms_asm

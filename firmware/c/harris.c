@@ -39,33 +39,9 @@ void bvb_harris_response_c(const uint8_t *src, int32_t *dst, int32_t width, int3
   }
 }
 
-/* Candidates are (key, value) pairs: key = y * width + x, value = R. The heap orders them by R
- * descending, then by key ascending. */
-struct cand {
-  int32_t key, r;
-};
-
-static int before(const struct cand *a, const struct cand *b) {
-  return a->r > b->r || (a->r == b->r && a->key < b->key);
-}
-
-static void sift_down(struct cand *h, int32_t n, int32_t i) {
-  for (;;) {
-    int32_t l = 2 * i + 1, best = i;
-    if (l < n && before(&h[l], &h[best])) best = l;
-    if (l + 1 < n && before(&h[l + 1], &h[best])) best = l + 1;
-    if (best == i) return;
-    struct cand t = h[i];
-    h[i] = h[best];
-    h[best] = t;
-    i = best;
-  }
-}
-
-int32_t bvb_harris_corners_c(const int32_t *resp, int32_t width, int32_t height, int32_t stride,
-                             int32_t threshold, int32_t max_corners, int32_t min_distance,
-                             int32_t *corners, void *scratch) {
-  struct cand *h = (struct cand *)scratch;
+int32_t bvb_harris_nms_c(const int32_t *resp, int32_t width, int32_t height, int32_t stride,
+                         int32_t threshold, int32_t *cand, int32_t *count, void *scratch) {
+  (void)scratch;
   int32_t n = 0;
   for (int32_t y = 1; y < height - 1; ++y) {
     const int32_t *r = resp + y * stride;
@@ -75,29 +51,63 @@ int32_t bvb_harris_corners_c(const int32_t *resp, int32_t width, int32_t height,
       const int32_t *u = r - stride, *d = r + stride;
       if (v <= u[x - 1] || v <= u[x] || v <= u[x + 1] || v <= r[x - 1]) continue;
       if (v < r[x + 1] || v < d[x - 1] || v < d[x] || v < d[x + 1]) continue;
-      h[n].key = y * width + x;
-      h[n].r = v;
+      cand[2 * n] = y << 16 | x;
+      cand[2 * n + 1] = v;
       ++n;
     }
   }
-  for (int32_t i = n / 2 - 1; i >= 0; --i) sift_down(h, n, i);
+  *count = n;
+  return n;
+}
 
+/* The heap holds (key, R) pairs and puts first the larger R, then the smaller key. A sentinel
+ * after its last entry (R = INT32_MIN, below every candidate since R > threshold >= 0) makes the
+ * second child always readable. */
+static void sift_down(int32_t *h, int32_t n, int32_t i) {
+  const int32_t tk = h[2 * i], tr = h[2 * i + 1];
+  for (;;) {
+    int32_t c = 2 * i + 1;
+    if (c >= n) break;
+    const int32_t *a = &h[2 * c];
+    if (a[3] > a[1] || (a[3] == a[1] && a[2] < a[0])) {
+      a += 2;
+      ++c;
+    }
+    if (a[1] < tr || (a[1] == tr && a[0] > tk)) break;
+    h[2 * i] = a[0];
+    h[2 * i + 1] = a[1];
+    i = c;
+  }
+  h[2 * i] = tk;
+  h[2 * i + 1] = tr;
+}
+
+int32_t bvb_harris_select_c(int32_t *cand, int32_t n, int32_t max_corners, int32_t min_distance,
+                            int32_t *corners) {
+  cand[2 * n] = 0x7FFFFFFF;
+  cand[2 * n + 1] = (int32_t)0x80000000;
+  for (int32_t i = n / 2 - 1; i >= 0; --i) sift_down(cand, n, i);
   const int32_t d2 = min_distance * min_distance;
   int32_t taken = 0;
   while (n > 0 && taken < max_corners) {
-    struct cand c = h[0];
-    h[0] = h[--n];
-    sift_down(h, n, 0);
-    const int32_t x = c.key % width, y = c.key / width;
-    int32_t ok = 1;
-    for (int32_t k = 0; k < taken && ok; ++k) {
-      const int32_t dx = corners[3 * k] - x, dy = corners[3 * k + 1] - y;
-      ok = dx * dx + dy * dy >= d2;
+    const int32_t key = cand[0], r = cand[1];
+    --n;
+    cand[0] = cand[2 * n];
+    cand[1] = cand[2 * n + 1];
+    cand[2 * n] = 0x7FFFFFFF;
+    cand[2 * n + 1] = (int32_t)0x80000000;
+    sift_down(cand, n, 0);
+    const int16_t x = (int16_t)(key & 0xFFFF), y = (int16_t)(key >> 16);
+    const int32_t *p = corners;
+    int32_t k = taken;
+    for (; k > 0; --k, p += 3) {
+      const int16_t dx = (int16_t)(p[0] - x), dy = (int16_t)(p[1] - y);
+      if (dx * dx + dy * dy < d2) break;
     }
-    if (!ok) continue;
+    if (k > 0) continue;
     corners[3 * taken] = x;
     corners[3 * taken + 1] = y;
-    corners[3 * taken + 2] = c.r;
+    corners[3 * taken + 2] = r;
     ++taken;
   }
   return taken;

@@ -1,10 +1,11 @@
-// Check, bench and run for bvb/harris.h: harris_response (C and assembly) and harris_corners
-// (C only).
+// Check, bench and run for bvb/harris.h: harris_response and harris_nms (C and assembly),
+// harris_select (C only).
 //
-// Why harris_corners has no assembly: it reads the response map once (one load and one compare
-// per pixel for the pixels below the threshold, which is nearly all of them) and sorts a few
-// hundred candidates. bfbench bench measures it next to harris_response on the same real
-// frames (the numbers are in firmware/asm/harris.S).
+// Why harris_nms has assembly although it is "only" a scan: in C it reads and compares every
+// pixel with a branch the compiler lays out as taken, about 16 cycles per pixel on real frames
+// at a 1% threshold, more than the assembly response. Why harris_select has none: it works on
+// the candidates (a few hundred to a few thousand), not on the pixels; the bench below measures
+// it on the candidates of the same real frames.
 #include "bvb/harris.h"
 
 #include <algorithm>
@@ -78,22 +79,70 @@ std::vector<int32_t> host_response(const std::vector<uint8_t> &img, int w, int h
   return r;
 }
 
-CheckCall corners_call(int w, int h, int stride, std::vector<int32_t> resp, int32_t threshold,
-                       int32_t max_corners, int32_t min_distance, const std::string &case_name) {
+CheckCall nms_call(int w, int h, int stride, std::vector<int32_t> resp, int32_t threshold,
+                   const std::string &case_name) {
   CheckCall c;
-  c.kernel = "harris_corners";
+  c.kernel = "harris_nms";
   c.case_name = case_name;
   c.pixels = double(w) * h;
+  const int cap = BVB_HARRIS_NMS_CAPACITY(w, h);
   int ir = c.in("resp", as_bytes(resp), View{4, true, w, h, stride});
-  int io = c.out("corners", size_t(std::max(1, max_corners)) * 12, View{4, true, 3, std::max(1, max_corners), 3});
-  int iscr = c.scratch("scratch", BVB_HARRIS_CORNERS_SCRATCH_BYTES(w, h));
-  c.buf(ir).word(w).word(h).word(stride).word(threshold).word(max_corners).word(min_distance).buf(io).buf(iscr);
-  // The count returned is not compared; the entries after the last corner taken keep the
-  // output's poison pattern, so a wrong count shows as a difference there.
+  int io = c.out("cand", size_t(cap) * 8, View{4, true, 2, cap, 2});
+  int in = c.out("count", 4, View{4, true});
+  int is = c.scratch("scratch", BVB_HARRIS_NMS_SCRATCH_BYTES(w));
+  c.buf(ir).word(w).word(h).word(stride).word(threshold).buf(io).buf(in).buf(is);
   c.host = [=](HostBuffers &m) {
-    bvb_harris_corners_c(m.s32(ir), w, h, stride, threshold, max_corners, min_distance, m.s32(io), m.u8(iscr));
+    bvb_harris_nms_c(m.s32(ir), w, h, stride, threshold, m.s32(io), m.s32(in), m.u8(is));
   };
   return c;
+}
+
+std::vector<int32_t> host_nms(const std::vector<int32_t> &resp, int w, int h, int stride, int32_t threshold) {
+  std::vector<int32_t> cand(size_t(BVB_HARRIS_NMS_CAPACITY(w, h)) * 2);
+  int32_t n = 0;
+  bvb_harris_nms_c(resp.data(), w, h, stride, threshold, cand.data(), &n, nullptr);
+  cand.resize(size_t(n) * 2);
+  return cand;
+}
+
+CheckCall select_call(std::vector<int32_t> cand, int32_t max_corners, int32_t min_distance,
+                      const std::string &case_name, double pixels) {
+  CheckCall c;
+  c.kernel = "harris_select";
+  c.case_name = case_name;
+  c.pixels = pixels;
+  const int n = int(cand.size() / 2);
+  cand.push_back(int32_t(0x5EED5EED));  // the room for the heap's sentinel
+  cand.push_back(int32_t(0x5EED5EED));
+  int ic = c.inout("cand", as_bytes(cand), View{4, true, 2, n + 1, 2});
+  int io = c.out("corners", size_t(std::max(1, max_corners)) * 12, View{4, true, 3, std::max(1, max_corners), 3});
+  c.buf(ic).word(n).word(max_corners).word(min_distance).buf(io);
+  // The count returned is not compared; the entries after the last corner taken keep the
+  // output's poison pattern, so a wrong count shows there.
+  c.host = [=](HostBuffers &m) { bvb_harris_select_c(m.s32(ic), n, max_corners, min_distance, m.s32(io)); };
+  return c;
+}
+
+// Response maps to pick corners from: of real frames, of noise, and maps of a few distinct
+// values (plateaus and ties everywhere, negative values too).
+std::vector<int32_t> test_map(int variant, int w, int h, int stride, Rng &rng, const std::string &frames,
+                              std::string &what) {
+  std::vector<int32_t> resp(size_t(stride) * (h - 1) + w);
+  for (auto &v : resp) v = int32_t(rng.u32() | 0x80000001u);  // row padding: must not be read
+  if (variant < 2 && w >= 5 && h >= 5) {
+    Pattern p = variant == 0 ? Pattern::Real : Pattern::Noise;
+    auto img = make_plane(p, w, h, w, rng, frames);
+    auto r = host_response(img, w, h, w);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) resp[size_t(y) * stride + x] = r[size_t(y) * w + x];
+    what = pattern_name(p);
+  } else {
+    const int levels = variant == 2 ? 3 : 40;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) resp[size_t(y) * stride + x] = int32_t(rng.uniform(-1, levels));
+    what = "levels" + std::to_string(levels);
+  }
+  return resp;
 }
 
 void check(Checker &ck) {
@@ -115,37 +164,33 @@ void check(Checker &ck) {
       }
     }
   }
-  if (ck.wants("harris_corners")) {
+  if (ck.wants("harris_nms") || ck.wants("harris_select")) {
     for (Size s : check_sizes(3, 3, rng, ck.options().campaign)) {
       for (int variant = 0; variant < 4; ++variant) {
         const int stride = pick_stride(s.w, rng);
-        std::vector<int32_t> resp(size_t(stride) * (s.h - 1) + s.w);
         std::string what;
-        if (variant < 2 && s.w >= 5 && s.h >= 5) {
-          // Responses of real frames and of noise.
-          Pattern p = variant == 0 ? Pattern::Real : Pattern::Noise;
-          auto img = make_plane(p, s.w, s.h, s.w, rng, frames);
-          auto r = host_response(img, s.w, s.h, s.w);
-          for (int y = 0; y < s.h; ++y)
-            for (int x = 0; x < s.w; ++x) resp[size_t(y) * stride + x] = r[size_t(y) * s.w + x];
-          what = pattern_name(p);
-        } else {
-          // Few distinct values: plateaus and ties everywhere; negative values too.
-          const int levels = variant == 2 ? 3 : 40;
-          for (auto &v : resp) v = int32_t(rng.uniform(-1, levels));
-          what = "levels" + std::to_string(levels);
-        }
+        std::vector<int32_t> resp = test_map(variant, s.w, s.h, stride, rng, frames, what);
         int32_t maxv = 0;
-        for (int32_t v : resp) maxv = std::max(maxv, v);
+        for (int y = 0; y < s.h; ++y)
+          for (int x = 0; x < s.w; ++x) maxv = std::max(maxv, resp[size_t(y) * stride + x]);
         const int32_t threshold = variant >= 2 ? rng.uniform(0, 1) : maxv / rng.uniform(20, 400);
-        const int32_t max_corners = rng.uniform(0, 3) == 0 ? rng.uniform(0, 3) : rng.uniform(1, 64);
-        const int32_t min_distance = rng.uniform(0, 12);
-        std::string name = std::to_string(s.w) + "x" + std::to_string(s.h) + " stride " + std::to_string(stride) +
-                           " " + what + " thr " + std::to_string(threshold) + " max " +
-                           std::to_string(max_corners) + " dist " + std::to_string(min_distance);
-        CheckCall c = corners_call(s.w, s.h, stride, std::move(resp), threshold, max_corners, min_distance, name);
-        place_buffers(c, kPlaces[rng.uniform(0, 3)]);
-        ck.add(std::move(c));
+        const std::string base = std::to_string(s.w) + "x" + std::to_string(s.h) + " stride " +
+                                 std::to_string(stride) + " " + what + " thr " + std::to_string(threshold);
+        if (ck.wants("harris_select")) {
+          const int32_t max_corners = rng.uniform(0, 3) == 0 ? rng.uniform(0, 3) : rng.uniform(1, 64);
+          const int32_t min_distance = rng.uniform(0, 12);
+          CheckCall c = select_call(host_nms(resp, s.w, s.h, stride, threshold), max_corners, min_distance,
+                                    base + " max " + std::to_string(max_corners) + " dist " +
+                                        std::to_string(min_distance),
+                                    double(s.w) * s.h);
+          place_buffers(c, kPlaces[rng.uniform(0, 3)]);
+          ck.add(std::move(c));
+        }
+        if (ck.wants("harris_nms")) {
+          CheckCall c = nms_call(s.w, s.h, stride, std::move(resp), threshold, base);
+          place_buffers(c, kPlaces[rng.uniform(0, 3)]);
+          ck.add(std::move(c));
+        }
       }
     }
   }
@@ -156,6 +201,8 @@ std::vector<uint8_t> bench_frame(int w, int h, Rng &rng) {
   return make_plane(Pattern::Real, w, h, w, rng, default_frames_real());
 }
 
+// A robot's setting for the corner kernels: candidates above 1% of the peak response (OpenCV's
+// default quality level), the 32 strongest at least 8 pixels apart.
 CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
   const std::string size = std::to_string(w) + "x" + std::to_string(h);
   auto img = bench_frame(w, h, rng);
@@ -163,18 +210,21 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
   auto resp = host_response(img, w, h, w);
   int32_t maxv = 0;
   for (int32_t v : resp) maxv = std::max(maxv, v);
-  // A robot's setting: the 32 strongest corners at least 8 pixels apart, above 1% of the peak.
-  return corners_call(w, h, w, std::move(resp), maxv / 100, 32, 8, size);
+  if (kernel == "harris_nms") return nms_call(w, h, w, std::move(resp), maxv / 100, size);
+  auto cand = host_nms(resp, w, h, w, maxv / 100);
+  return select_call(std::move(cand), 32, 8, size + " " + std::to_string(cand.size() / 2) + " cand", double(w) * h);
 }
 
 // harris_response, per pixel: the gradients (two byte differences per pixel, four pixels per
 // BYTEOP16M, and the x32 scaling: 1.0 issue), the three 3-row column sums (9 products:
-// 4.5 dual-MAC issues), the three 3-column window sums (6 16-bit adds on pairs: 3.0 issues) and
-// the response (2 multiplies and 3 MACs on pairs: 2.5 issues). Loads and stores fit the free
-// slots. 11 issues per pixel.
+// 4.5 dual-MAC issues), the three 3-column window sums (2 vector adds per pair and sum: 3.0) and
+// the response (hh, kh and three dual MACs per pair: 2.5): 11 issues per pixel.
+// harris_nms: every value goes through the one 32-bit ALU at least once (a MAX tree and a
+// compare per block of values): 1 issue per pixel, whatever the candidates cost on top.
 double lower_bound(const std::string &kernel, int w, int h) {
-  if (kernel != "harris_response") return 0;
-  return 11.0 * w * h;
+  if (kernel == "harris_response") return 11.0 * w * h;
+  if (kernel == "harris_nms") return 1.0 * w * h;
+  return 0;
 }
 
 RunPlan plan_run(RunRequest &req) {
@@ -199,27 +249,43 @@ RunPlan plan_run(RunRequest &req) {
     p.summary = std::to_string(w) + "x" + std::to_string(h) + ", response (positive part, scaled to the peak)";
     return p;
   }
-  const int percent = req.params.get_int("threshold_permille", 10, 0, 1000);
+  const int permille = req.params.get_int("threshold_permille", 10, 0, 1000);
   const int max_corners = req.params.get_int("max", 32, 0, 4096);
   const int dist = req.params.get_int("distance", 8, 0, 1000);
   req.params.check_all_used();
   auto resp = host_response(a.data, w, h, w);
   int32_t maxv = 0;
   for (int32_t v : resp) maxv = std::max(maxv, v);
-  const int32_t thr = int32_t(int64_t(maxv) * percent / 1000);
-  p.call = corners_call(w, h, w, std::move(resp), thr, max_corners, dist, "run");
+  const int32_t thr = int32_t(int64_t(maxv) * permille / 1000);
+  // The frame with a mark on each point: a dot per candidate (harris_nms), a cross per corner
+  // taken (harris_select).
+  auto mark = [](Image &out, int x, int y, int arm) {
+    for (int d = -arm; d <= arm; ++d) {
+      if (x + d >= 0 && x + d < out.width) out.at(x + d, y) = 255;
+      if (y + d >= 0 && y + d < out.height) out.at(x, y + d) = 255;
+    }
+  };
+  if (req.kernel == "harris_nms") {
+    p.call = nms_call(w, h, w, std::move(resp), thr, "run");
+    p.write = [a, mark](std::vector<std::vector<uint8_t>> &bufs, const std::string &path) {
+      Image out = a;
+      int32_t n;
+      std::memcpy(&n, bufs[2].data(), 4);
+      const int32_t *c = reinterpret_cast<const int32_t *>(bufs[1].data());
+      for (int k = 0; k < n; ++k) mark(out, c[2 * k] & 0xFFFF, c[2 * k] >> 16, 0);
+      write_pnm(path, out);
+    };
+    p.summary = std::to_string(w) + "x" + std::to_string(h) + ", candidates above " + std::to_string(thr);
+    return p;
+  }
+  p.call = select_call(host_nms(resp, w, h, w, thr), max_corners, dist, "run", double(w) * h);
   std::fill(p.call.bufs[1].data.begin(), p.call.bufs[1].data.end(), 0xFF);  // x = -1 ends the list
-  // The frame with a cross on each corner taken.
-  p.write = [a, max_corners](std::vector<std::vector<uint8_t>> &bufs, const std::string &path) {
+  p.write = [a, max_corners, mark](std::vector<std::vector<uint8_t>> &bufs, const std::string &path) {
     Image out = a;
     const int32_t *c = reinterpret_cast<const int32_t *>(bufs[1].data());
     for (int k = 0; k < max_corners; ++k) {
-      const int x = c[3 * k], y = c[3 * k + 1];
-      if (x < 0 || y < 0 || x >= out.width || y >= out.height) break;
-      for (int d = -3; d <= 3; ++d) {
-        if (x + d >= 0 && x + d < out.width) out.at(x + d, y) = 255;
-        if (y + d >= 0 && y + d < out.height) out.at(x, y + d) = 255;
-      }
+      if (c[3 * k] < 0) break;
+      mark(out, c[3 * k], c[3 * k + 1], 3);
     }
     write_pnm(path, out);
   };
@@ -228,7 +294,8 @@ RunPlan plan_run(RunRequest &req) {
   return p;
 }
 
-const Family kHarris{"harris", {"harris_response", "harris_corners"}, check, bench_call, lower_bound, plan_run};
+const Family kHarris{"harris", {"harris_response", "harris_nms", "harris_select"}, check, bench_call, lower_bound,
+                     plan_run};
 BVB_FAMILY(kHarris);
 
 }  // namespace

@@ -31,22 +31,31 @@
 #define BVB_HARRIS_K4_Q15 5243
 #define BVB_HARRIS_SCRATCH_BYTES(width) (24 * ((width) + 16))
 
-/* CORNERS from a response map (the C reference only: the scan is memory-bound and cheap next to
- * the response, see harness/checks/harris.cpp for the numbers):
- *   Candidates: 1 <= x <= w-2, 1 <= y <= h-2, R > threshold, and a local maximum over the 8
- *   neighbours with ties broken in raster order: R strictly greater than the four neighbours
- *   that come before it in raster order ((x-1,y-1), (x,y-1), (x+1,y-1), (x-1,y)) and >= the four
- *   after it. Of a run of equal values only the first in raster order survives.
- *   Selection, greedy: candidates in order of decreasing R, equal R in raster order (smaller
- *   y*width+x first); a candidate is taken when its squared Euclidean distance to every corner
- *   already taken is >= min_distance^2; stop after max_corners.
- * corners: 3 int32 per corner (x, y, R) in the order taken. Returns the number taken.
- * resp: width x height int32, stride elements between rows (for example bvb_harris_response's
- * output). threshold >= 0 (so the zero border never qualifies), max_corners >= 0,
- * 0 <= min_distance <= 46340. scratch: BVB_HARRIS_CORNERS_SCRATCH_BYTES(width, height) bytes,
- * 4-byte aligned: room for every possible candidate (maxima are never 8-adjacent). */
-#define BVB_HARRIS_CORNERS_SCRATCH_BYTES(width, height) \
-  (8 * (((width) + 1) / 2) * (((height) + 1) / 2) + 8)
+/* CORNERS from a response map, in two kernels:
+ * bvb_harris_nms, the candidates (C and assembly; the scan reads every pixel, which in C costs
+ * more than the assembly response itself):
+ *   1 <= x <= w-2, 1 <= y <= h-2, R > threshold, and a local maximum over the 8 neighbours with
+ *   ties broken in raster order: R strictly greater than the four neighbours that come before it
+ *   in raster order ((x-1,y-1), (x,y-1), (x+1,y-1), (x-1,y)) and >= the four after it. Of a run
+ *   of equal values only the first in raster order survives.
+ *   cand: pairs of int32 (y << 16 | x, R) in raster order, at most
+ *   BVB_HARRIS_NMS_CAPACITY(width, height) of them (maxima are never 8-adjacent); entries past
+ *   the count are left alone. *count and the return value: the number of candidates.
+ *   resp: width x height int32, stride elements between rows (for example bvb_harris_response's
+ *   output), every value > INT32_MIN; threshold >= 0 (so the zero border never qualifies);
+ *   3 <= width, height <= 32767. scratch: BVB_HARRIS_NMS_SCRATCH_BYTES(width) bytes, 4-byte
+ *   aligned, any contents (the assembly keeps the lower row's candidates of a row pair there).
+ * bvb_harris_select, the greedy choice (C only: its cost depends on the number of candidates,
+ * a few hundred to a few thousand, not on the pixels; harness/checks/harris.cpp has the numbers):
+ *   candidates in order of decreasing R, equal R in raster order (smaller key first); a candidate
+ *   is taken when its squared Euclidean distance to every corner already taken is
+ *   >= min_distance^2; stop after max_corners. cand (n pairs as bvb_harris_nms leaves them, and
+ *   room for one more: BVB_HARRIS_NMS_CAPACITY + 1 pairs always do) is reordered in place (a
+ *   heap, with a sentinel pair after it). corners: 3 int32 per corner (x, y, R) in the order
+ *   taken. Candidates must have R >= 0 (bvb_harris_nms gives R > threshold >= 0).
+ *   Returns the number taken. max_corners >= 0, 0 <= min_distance <= 46340. */
+#define BVB_HARRIS_NMS_CAPACITY(width, height) ((((width) - 1) / 2) * (((height) - 1) / 2))
+#define BVB_HARRIS_NMS_SCRATCH_BYTES(width) (8 * (((width) - 1) / 2) + 8)
 
 #ifndef __ASSEMBLER__
 #include <stdint.h>
@@ -60,9 +69,13 @@ void bvb_harris_response_c(const uint8_t *src, int32_t *dst, int32_t width, int3
 void bvb_harris_response_asm(const uint8_t *src, int32_t *dst, int32_t width, int32_t height,
                              int32_t src_stride, int32_t dst_stride, void *scratch);
 
-int32_t bvb_harris_corners_c(const int32_t *resp, int32_t width, int32_t height, int32_t stride,
-                             int32_t threshold, int32_t max_corners, int32_t min_distance,
-                             int32_t *corners, void *scratch);
+int32_t bvb_harris_nms_c(const int32_t *resp, int32_t width, int32_t height, int32_t stride,
+                         int32_t threshold, int32_t *cand, int32_t *count, void *scratch);
+int32_t bvb_harris_nms_asm(const int32_t *resp, int32_t width, int32_t height, int32_t stride,
+                           int32_t threshold, int32_t *cand, int32_t *count, void *scratch);
+
+int32_t bvb_harris_select_c(int32_t *cand, int32_t n, int32_t max_corners, int32_t min_distance,
+                            int32_t *corners);
 
 #ifdef __cplusplus
 }
