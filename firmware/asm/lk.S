@@ -559,3 +559,164 @@ _bvb_lk_patch_asm:
 	(r7:4, p5:3) = [sp++];
 	rts;
 	.size _bvb_lk_patch_asm, . - _bvb_lk_patch_asm
+
+/* ---- bvb_lk_pyramid_asm(src, width, height, stride, levels, pyr) ----
+ * Four output pixels per three issues: BYTEOP2P averages the 2x2 blocks of two outputs with
+ * rounding ((sum + 2) >> 2, the C's), twice on a sliding pair of words per row (normal and (R)
+ * order), and BYTEPACK packs the four bytes for one aligned store. BYTEOP2P aligns both rows by
+ * I0, so this path needs rows of the same alignment (a stride that is a multiple of 4: always
+ * true above level 0, where rows are (w + 3) & ~3 bytes, and true of the bench's frames); other
+ * strides, and the last few outputs of a row (so that no load leaves the row), take a byte loop
+ * of about 7 cycles per output.
+ * Cycles: see the bench. TODO */
+#define Y_IN    -4
+#define Y_INSTR -8
+#define Y_W     -12    /* input width */
+#define Y_H     -16
+#define Y_OUT   -20
+#define Y_LEFT  -24    /* levels left */
+#define Y_N4    -28    /* four-pixel groups per row on the fast path */
+#define Y_ROWS  -32
+#define Y_OSTR  -36
+#define Y_SIZE  36
+#define Y_ARG_STRIDE 48
+#define Y_ARG_LEVELS 52
+#define Y_ARG_PYR    56
+
+	.global _bvb_lk_pyramid_asm
+	.type _bvb_lk_pyramid_asm, STT_FUNC
+_bvb_lk_pyramid_asm:
+	[--sp] = (r7:4, p5:3);
+	link Y_SIZE;
+	[fp + Y_IN] = r0;
+	[fp + Y_W] = r1;
+	[fp + Y_H] = r2;
+	r0 = [fp + Y_ARG_STRIDE];
+	[fp + Y_INSTR] = r0;
+	r0 = [fp + Y_ARG_PYR];
+	[fp + Y_OUT] = r0;
+	r0 = [fp + Y_ARG_LEVELS];
+	r0 += -1;
+	[fp + Y_LEFT] = r0;
+	cc = r0 <= 0;
+	if cc jump .Ly_done;
+.Ly_level:
+	r1 = [fp + Y_W];
+	r1 >>= 1;                /* w */
+	r2 = [fp + Y_H];
+	r2 >>= 1;                /* h */
+	[fp + Y_ROWS] = r2;
+	r3 = r1;
+	r3 += 3;
+	r4 = -4;
+	r3 = r3 & r4;
+	[fp + Y_OSTR] = r3;      /* s */
+	/* fast path groups: (2w - 5) >> 3 when the input rows share their alignment, else none */
+	r4 = r1 << 1;
+	r4 += -5;
+	r4 >>>= 3;
+	r5 = 0;
+	r4 = max (r4, r5);
+	r6 = [fp + Y_INSTR];
+	r7 = 3;
+	r6 = r6 & r7;
+	cc = r6 == 0;
+	if !cc r4 = r5;
+	[fp + Y_N4] = r4;
+	cc = r2 == 0;
+	if cc jump .Ly_next_level;
+	p3 = [fp + Y_IN];        /* row a of the current output row */
+	p4 = [fp + Y_OUT];       /* the output row */
+.Ly_row:
+	r0 = [fp + Y_INSTR];
+	r1 = p3;
+	i0 = r1;
+	r1 = r1 + r0;
+	i1 = r1;
+	i2 = p4;
+	p2 = [fp + Y_N4];
+	r7 = p2;
+	cc = r7 == 0;
+	if cc jump .Ly_tail;
+	disalgnexcpt || r0 = [i0++] || r2 = [i1++];
+	disalgnexcpt || r1 = [i0++] || r3 = [i1++];
+	r4 = byteop2p (r1:0, r3:2) (rndl) || r0 = [i0++] || r2 = [i1++];
+	r5 = byteop2p (r1:0, r3:2) (rndl, r) || r1 = [i0++] || r3 = [i1++];
+	r6 = bytepack (r4, r5);
+	p2 += -1;
+	cc = p2 == 0;
+	if cc jump .Ly_vec_end;
+	lsetup (.Ly_s, .Ly_e) lc0 = p2;
+.Ly_s:	r4 = byteop2p (r1:0, r3:2) (rndl) || r0 = [i0++] || r2 = [i1++];
+	r5 = byteop2p (r1:0, r3:2) (rndl, r) || r1 = [i0++] || r3 = [i1++];
+.Ly_e:	r6 = bytepack (r4, r5) || [i2++] = r6;
+.Ly_vec_end:
+	[i2++] = r6;
+.Ly_tail:
+	/* outputs 4 n4 .. w - 1, one at a time */
+	r7 <<= 2;                /* x0 = 4 n4 */
+	r0 = [fp + Y_W];
+	r0 >>= 1;
+	r0 = r0 - r7;            /* outputs left */
+	cc = r0 == 0;
+	if cc jump .Ly_row_end;
+	p2 = r0;
+	r1 = p3;
+	r2 = r7 << 1;
+	r1 = r1 + r2;
+	p0 = r1;                 /* row a at 2 x0 */
+	r2 = [fp + Y_INSTR];
+	r1 = r1 + r2;
+	p1 = r1;                 /* row b */
+	r1 = p4;
+	r1 = r1 + r7;
+	p5 = r1;                 /* the output */
+	lsetup (.Ly_t_s, .Ly_t_e) lc0 = p2;
+.Ly_t_s: r0 = b[p0++] (z);
+	r1 = b[p0++] (z);
+	r0 = r0 + r1 (ns) || r2 = b[p1++] (z);
+	r0 = r0 + r2 (ns) || r3 = b[p1++] (z);
+	r0 = r0 + r3 (ns);
+	r0 += 2;
+	r0 >>= 2;
+.Ly_t_e: b[p5++] = r0;
+.Ly_row_end:
+	r0 = [fp + Y_INSTR];
+	r0 <<= 1;
+	r1 = p3;
+	r1 = r1 + r0;
+	p3 = r1;
+	r0 = [fp + Y_OSTR];
+	r1 = p4;
+	r1 = r1 + r0;
+	p4 = r1;
+	r0 = [fp + Y_ROWS];
+	r0 += -1;
+	[fp + Y_ROWS] = r0;
+	cc = r0 == 0;
+	if !cc jump .Ly_row;
+.Ly_next_level:
+	/* this level becomes the next one's input */
+	r0 = [fp + Y_OUT];
+	[fp + Y_IN] = r0;
+	r1 = [fp + Y_OSTR];
+	[fp + Y_INSTR] = r1;
+	r2 = [fp + Y_H];
+	r2 >>= 1;
+	[fp + Y_H] = r2;
+	r1 *= r2;
+	r0 = r0 + r1;
+	[fp + Y_OUT] = r0;
+	r0 = [fp + Y_W];
+	r0 >>= 1;
+	[fp + Y_W] = r0;
+	r0 = [fp + Y_LEFT];
+	r0 += -1;
+	[fp + Y_LEFT] = r0;
+	cc = r0 == 0;
+	if !cc jump .Ly_level;
+.Ly_done:
+	unlink;
+	(r7:4, p5:3) = [sp++];
+	rts;
+	.size _bvb_lk_pyramid_asm, . - _bvb_lk_pyramid_asm
