@@ -82,6 +82,39 @@ static void sift_down(int32_t *h, int32_t n, int32_t i) {
   h[2 * i + 1] = tr;
 }
 
+/* Removes the first candidate: the hole left at the root sinks along the better children to a
+ * leaf (one comparison per level), then the last entry moves into it and rises as far as it must
+ * (rarely more than a level). */
+static void pop(int32_t *h, int32_t n) {
+  const int32_t lk = h[2 * (n - 1)], lr = h[2 * (n - 1) + 1];
+  --n;
+  h[2 * n] = 0x7FFFFFFF;
+  h[2 * n + 1] = (int32_t)0x80000000;
+  int32_t i = 0;
+  for (;;) {
+    int32_t c = 2 * i + 1;
+    if (c >= n) break;
+    const int32_t *a = &h[2 * c];
+    if (a[3] > a[1] || (a[3] == a[1] && a[2] < a[0])) {
+      a += 2;
+      ++c;
+    }
+    h[2 * i] = a[0];
+    h[2 * i + 1] = a[1];
+    i = c;
+  }
+  while (i > 0) {
+    const int32_t p = (i - 1) >> 1;
+    const int32_t *a = &h[2 * p];
+    if (lr < a[1] || (lr == a[1] && lk > a[0])) break;
+    h[2 * i] = a[0];
+    h[2 * i + 1] = a[1];
+    i = p;
+  }
+  h[2 * i] = lk;
+  h[2 * i + 1] = lr;
+}
+
 int32_t bvb_harris_select_c(int32_t *cand, int32_t n, int32_t max_corners, int32_t min_distance,
                             int32_t *corners) {
   cand[2 * n] = 0x7FFFFFFF;
@@ -91,12 +124,8 @@ int32_t bvb_harris_select_c(int32_t *cand, int32_t n, int32_t max_corners, int32
   int32_t taken = 0;
   while (n > 0 && taken < max_corners) {
     const int32_t key = cand[0], r = cand[1];
+    pop(cand, n);
     --n;
-    cand[0] = cand[2 * n];
-    cand[1] = cand[2 * n + 1];
-    cand[2 * n] = 0x7FFFFFFF;
-    cand[2 * n + 1] = (int32_t)0x80000000;
-    sift_down(cand, n, 0);
     const int16_t x = (int16_t)(key & 0xFFFF), y = (int16_t)(key >> 16);
     const int32_t *p = corners;
     int32_t k = taken;
