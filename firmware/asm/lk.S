@@ -17,7 +17,15 @@
  *     then one vector subtract from the template: 3 issues per pair;
  *   b: two dual MACs per pair into the 40-bit accumulators (dI x Ix in A0, dI x Iy in A1), then
  *     an arithmetic shift by 4.
- * Cycles: see harness/checks/lk.cpp and the bench. TODO */
+ * Cycles (bfbench bench: 32 Harris corners of Grove2, 3 levels, 7x7, 10 iterations per level
+ * fixed; work count 32 x 49 x 10 x 3): 535,786 at 160x120, 618,929 at 320x240, 533,767 at
+ * 640x480, 11.4, 13.2, 11.4 cycles per window pixel and iteration, all included (the C
+ * reference: 77-89, 6.7x to 6.8x). An iteration of a 7x7 window is about 430 cycles (horizontal
+ * 8 rows x ~21, vertical ~94, b ~66, the solve and tests ~95); the template step about 650 per
+ * level; the rest is the C driver (the flat test and the inverse with its division).
+ * Lower bound: 3.5 issues per window pixel and iteration (4 bilinear products: 2 dual-MAC
+ * issues, half a vector subtract, 2 products for b: 1 issue), not counting the per-level work.
+ * Working set: the window rows of two levels' images and under 4 KB of scratch (L1 on hardware). */
 #include "bvb/lk.h"
 
 	.section .l1.text, "ax"
@@ -568,7 +576,10 @@ _bvb_lk_patch_asm:
  * true above level 0, where rows are (w + 3) & ~3 bytes, and true of the bench's frames); other
  * strides, and the last few outputs of a row (so that no load leaves the row), take a byte loop
  * of about 7 cycles per output.
- * Cycles: see the bench. TODO */
+ * Cycles (bfbench bench, levels 1 and 2 of a frame with stride = width): 12,364 at 160x120,
+ * 33,604 at 320x240, 103,084 at 640x480 (2.06, 1.40, 1.07 per output pixel: the row tails and
+ * set-up weigh on small levels); the C reference takes 12.1-12.3 (6.0x, 8.7x, 11.2x).
+ * Lower bound: 0.75 issues per output pixel (BYTEOP2P: 2 outputs per issue, BYTEPACK: 4). */
 #define Y_IN    -4
 #define Y_INSTR -8
 #define Y_W     -12    /* input width */
