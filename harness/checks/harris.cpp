@@ -20,8 +20,9 @@ namespace {
 
 const uint32_t kPlaces[] = {BVB_PLACE_SDRAM, BVB_PLACE_L1A, BVB_PLACE_L1B, BVB_PLACE_SCRATCH};
 
+// The arenas' sizes less a margin for tables other kernels may link into L1.
 size_t room(uint32_t place) {
-  return place == BVB_PLACE_SCRATCH ? 4096u : place == BVB_PLACE_L1B ? 24576u : 32768u;
+  return place == BVB_PLACE_SCRATCH ? 3584u : place == BVB_PLACE_L1B ? 20480u : 28672u;
 }
 
 // Puts each buffer in `place` when it fits there (with what is already there), else in SDRAM.
