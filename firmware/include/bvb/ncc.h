@@ -60,18 +60,16 @@
 #define BVB_NCC_FLAT 2
 #define BVB_NCC_BAD_PARAMS 3
 
-/* Scratch layout of the assembly (all sizes in bytes; L = 2s+2r+1 is the side of the search
- * area, N = (2r+1)^2). The header only needs the total; the assembly derives the same offsets. */
+/* Scratch of the assembly, in bytes (L = 2s+2r+1 is the side of the search area, w = 2r+1,
+ * N = w^2): a context block, two 16-bit copies of the search area (even and odd word alignment),
+ * the zero-mean template flat and with padded rows, column sums of I and N*I^2, the window
+ * variances v and the numerators. */
 #define BVB_NCC_L(r, s) (2 * (s) + 2 * (r) + 1)
 #define BVB_NCC_SCRATCH_SIZE(r, s)                                                                 \
-  (2 * (BVB_NCC_L(r, s) * (BVB_NCC_L(r, s) + 1) * 2) + 8 /* two 16-bit copies of the area */      \
-   + 4 * (((2 * (r) + 1) * (2 * (r) + 1) + 1) / 2)    /* zero-mean template, flat */            \
-   + 4 * ((2 * (r) + 1) * ((r) + 1))                  /* zero-mean template, rows padded */     \
-   + 4 * ((BVB_NCC_L(r, s) + 1) * ((s) + 1))           /* column sums of I */                    \
-   + 4 * ((2 * (s) + 2) * (BVB_NCC_L(r, s) + 1))       /* column sums of N*I^2 */                \
-   + 4 * ((2 * (s) + 2) * (2 * (s) + 1))               /* window variances v */                 \
-   + 4 * ((2 * (s) + 2) * (2 * (s) + 2))               /* numerators */                         \
-   + 64)
+  (256 + 4 * BVB_NCC_L(r, s) * (BVB_NCC_L(r, s) + 1) + 4                                          \
+   + 4 * (((2 * (r) + 1) * (2 * (r) + 1) + 1) / 2) + 4 * (2 * (r) + 1) * ((r) + 1)                \
+   + 4 * (BVB_NCC_L(r, s) + 1) * ((s) + 1) + 4 * (2 * (s) + 2) * (BVB_NCC_L(r, s) + 1)            \
+   + 4 * (2 * (s) + 2) * (2 * (s) + 1) + 4 * (2 * (s) + 2) * (2 * (s) + 2))
 
 #ifdef __cplusplus
 extern "C" {
