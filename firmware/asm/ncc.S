@@ -39,12 +39,10 @@
 #define CTX_TP 56     /* T' rows as (0, T'0, ..., T'2r): r+1 words each */
 #define CTX_CST 60    /* column sums of I: column c at CST + c*DSB, halfword d */
 #define CTX_NCQ 64    /* column sums of N*I^2: row d at NCQ + d*NCQROW, word c */
-#define CTX_V 68      /* v: row d at V + d*VROW, word e */
 #define CTX_NP 72     /* num of candidate pairs: (p*(2s+1) + d)*8, lanes e = 2p, 2p+1 */
 #define CTX_NS 76     /* num of the last column, e = 2s: word d */
 #define CTX_DSB 80    /* (2s+2)*2 */
 #define CTX_NCQROW 84 /* (L+1)*4 */
-#define CTX_VROW 88   /* (2s+1)*4 */
 #define CTX_X 92
 #define CTX_Y 96
 #define CTX_VT 100
@@ -81,7 +79,17 @@
 #define CTX_T17 228
 #define CTX_T18 232
 #define CTX_T19 236
-#define CTX_SIZE 256
+#define CTX_HE2 240   /* the spare He, Ho: the next point's search area, copied during this MAC pass */
+#define CTX_HO2 244
+#define CTX_TAB 248   /* copy program: (source, He destination, Ho destination) per pair of candidates */
+#define CTX_PIPE 252  /* 1 when the MAC pass copies the next point's search area (r = 5, 5 <= s <= 10) */
+#define CTX_NB 256    /* column pairs whose MAC loop copies */
+#define CTX_PRE 260   /* 1 when the spare holds the next point's search area */
+#define CTX_RECIP 264 /* ceil(2^16 / (2s+1)) */
+#define CTX_NCH 268   /* chunks of the copy program that are real */
+#define CTX_DUMMY 272 /* 36 bytes: where the program's idle chunks write */
+#define CTX_SIZE 320
+#define CHUNK 18      /* pixels per chunk of the copy program */
 
 #define MAX_RADIUS 5
 #define MAX_SEARCH 16
@@ -163,9 +171,31 @@ _bvb_ncc_match_asm:
 	call _ncc_template;
 	cc = r0 == 0;
 	if cc jump .Lm_flat;
+	r0 = [p5 + CTX_PRE];
+	cc = r0 == 0;
+	if cc jump .Lm_build;
+	/* the last MAC pass copied this point's search area into the spare buffers */
+	r0 = [p5 + CTX_HE];
+	r1 = [p5 + CTX_HE2];
+	[p5 + CTX_HE] = r1;
+	[p5 + CTX_HE2] = r0;
+	r0 = [p5 + CTX_HO];
+	r1 = [p5 + CTX_HO2];
+	[p5 + CTX_HO] = r1;
+	[p5 + CTX_HO2] = r0;
+	jump .Lm_built;
+.Lm_build:
 	call _ncc_build;
+.Lm_built:
 	call _ncc_pass1;
 	call _ncc_pass2;
+	r0 = 0;
+	[p5 + CTX_PRE] = r0;
+	r0 = [p5 + CTX_PIPE];
+	cc = r0 == 0;
+	if cc jump .Lm_mac;
+	call _ncc_prebuild;
+.Lm_mac:
 	call _ncc_macpass;
 	call _ncc_select;
 	r0 = [p5 + CTX_BN];
@@ -191,6 +221,8 @@ _bvb_ncc_match_asm:
 	r1 = 1;
 	jump .Lm_status;
 .Lm_flat:
+	r0 = 0;
+	[p5 + CTX_PRE] = r0;
 	r1 = 2;
 .Lm_status:
 	p3 = [p5 + CTX_RES];
@@ -281,13 +313,6 @@ _ncc_layout:
 	r6 = [p5 + CTX_NCQROW];
 	r6 *= r5;
 	r7 = r7 + r6;
-	[p5 + CTX_V] = r7;
-	r6 = r4 << 1;
-	r6 += 1;
-	r6 = r6 << 2;
-	[p5 + CTX_VROW] = r6;
-	r6 *= r5;
-	r7 = r7 + r6;
 	r7 += 8;             /* two words for the pipeline's first (empty) stores */
 	[p5 + CTX_NP] = r7;
 	r6 = r4 << 1;
@@ -297,8 +322,150 @@ _ncc_layout:
 	r7 = r7 + r6;
 	r7 += 4;
 	[p5 + CTX_NS] = r7;
+	r6 = r4 << 1;
+	r6 += 2;
+	r6 = r6 << 2;
+	r7 = r7 + r6;        /* end of the numerators */
+	/* ceil(2^16 / (2s+1)) */
+	r0 = r4 << 1;
+	r0 += 1;
+	r6.l = 0;
+	r6.h = 1;
+	r6 = r6 + r0;
+	r6 += -1;
+	[p5 + CTX_T0] = r7;
+	r1 = r0;
+	r0 = r6;
+	[--sp] = rets;
+	call _ncc_udiv;
+	rets = [sp++];
+	[p5 + CTX_RECIP] = r0;
+	r7 = [p5 + CTX_T0];
+	/* the copy program (r = 5, 5 <= s <= 10): a spare He, Ho and the program itself */
+	r0 = 0;
+	[p5 + CTX_PIPE] = r0;
+	[p5 + CTX_PRE] = r0;
+	r3 = [p5 + CTX_R];
+	r4 = [p5 + CTX_S];
+	r0 = 5;
+	cc = r3 == r0;
+	if !cc jump .Ll_out;
+	cc = r4 < r0;
+	if cc jump .Ll_out;
+	r0 = 10;
+	cc = r0 < r4;
+	if cc jump .Ll_out;
+	r0 = 1;
+	[p5 + CTX_PIPE] = r0;
+	[p5 + CTX_HE2] = r7;
+	r2 = [p5 + CTX_L];
+	r5 = [p5 + CTX_HEROW];
+	r6 = r2;
+	r6 *= r5;            /* L * HEROW */
+	r7 = r7 + r6;
+	r7 += 4;
+	[p5 + CTX_HO2] = r7;
+	r7 = r7 + r6;
+	[p5 + CTX_TAB] = r7;
+	r0 = r2 << 1;        /* 2L chunks: [0, 18) and [L-18, L) of each row */
+	[p5 + CTX_NCH] = r0;
+	r1 = r4 << 1;
+	r1 += 1;             /* pairs per column pair */
+	r0 = r0 + r1;
+	r0 += -1;
+	[p5 + CTX_T0] = r1;
+	[--sp] = rets;
+	call _ncc_udiv;      /* column pairs that copy */
+	rets = [sp++];
+	[p5 + CTX_NB] = r0;
+	r1 = [p5 + CTX_T0];
+	r0 *= r1;            /* chunks in the program */
+	/* every chunk idle until _ncc_prebuild fills the first NCH: read the frame's first bytes,
+	 * write the dummy area */
+	p0 = r0;
+	p1 = [p5 + CTX_TAB];
+	r0 = [p5 + CTX_FRAME2];
+	r1 = p5;
+	r2 = CTX_DUMMY;
+	r1 = r1 + r2;
+	lsetup (.Ll_d0, .Ll_d1) lc0 = p0;
+.Ll_d0:
+	[p1++] = r0;
+	[p1++] = r1;
+.Ll_d1:
+	[p1++] = r1;
+.Ll_out:
 	rts;
 
+
+/* ------------------------------------------------------------------------------------------- */
+/* The copy program for the next point that is inside the frame, if any: two chunks of CHUNK
+ * pixels per row of its search area ([0, CHUNK) and [L - CHUNK, L), overlapping), each a
+ * (source, He destination, Ho destination) triple for the spare buffers. Sets CTX_PRE. */
+	.align 4
+_ncc_prebuild:
+	r5 = [p5 + CTX_NLEFT];
+	cc = r5 <= 0;
+	if cc jump .Lpb_none;
+	p0 = [p5 + CTX_PTS];
+	r2 = [p5 + CTX_R];
+	r3 = [p5 + CTX_S];
+	r2 = r2 + r3;        /* r + s */
+	r6 = [p5 + CTX_W];
+	r7 = [p5 + CTX_H];
+.Lpb_scan:
+	r0 = w[p0++] (x);
+	r1 = w[p0++] (x);
+	r3 = r0 - r2;
+	cc = r3 < 0;
+	if cc jump .Lpb_next;
+	r3 = r1 - r2;
+	cc = r3 < 0;
+	if cc jump .Lpb_next;
+	r3 = r0 + r2;
+	cc = r3 < r6;
+	if !cc jump .Lpb_next;
+	r3 = r1 + r2;
+	cc = r3 < r7;
+	if cc jump .Lpb_found;
+.Lpb_next:
+	r5 += -1;
+	cc = r5 <= 0;
+	if !cc jump .Lpb_scan;
+.Lpb_none:
+	rts;
+.Lpb_found:
+	r1 = r1 - r2;
+	r3 = [p5 + CTX_STRIDE];
+	r1 *= r3;
+	r0 = r0 - r2;
+	r0 = r0 + r1;
+	r1 = [p5 + CTX_FRAME2];
+	r0 = r0 + r1;        /* source, row 0 */
+	r1 = [p5 + CTX_HE2];
+	r2 = [p5 + CTX_HO2];
+	r2 += -2;            /* pixel c of a row at +2c in both */
+	r4 = [p5 + CTX_L];
+	p1 = r4;
+	r4 += -CHUNK;        /* the second chunk's first pixel */
+	r5 = r4 << 1;
+	r6 = [p5 + CTX_HEROW];
+	p0 = [p5 + CTX_TAB];
+	lsetup (.Lpb_0, .Lpb_1) lc0 = p1;
+.Lpb_0:
+	r7 = r0 + r4 (ns) || [p0++] = r0 || nop;
+	[p0++] = r1;
+	[p0++] = r2;
+	[p0++] = r7;
+	r7 = r1 + r5 (ns) || nop || nop;
+	r0 = r0 + r3 (ns) || [p0++] = r7 || nop;
+	r7 = r2 + r5 (ns) || nop || nop;
+	r1 = r1 + r6 (ns) || [p0++] = r7 || nop;
+.Lpb_1:
+	r2 = r2 + r6 (ns);
+	r0 = 1;
+	[p5 + CTX_PRE] = r0;
+	rts;
 
 /* ------------------------------------------------------------------------------------------- */
 /* Template: ST (ALU) and STT (MAC) in two cycles per pixel (one dual MAC cannot do both: its
@@ -441,7 +608,9 @@ _ncc_build:
  * w = 2r+1 rows (16-bit lanes) into CST (column-major, rows d = 0..2s, then d = 2s+1 repeating
  * 2s), and of N*I^2 (A0, A1) into NCQ (row-major, same rows). One step is four cycles:
  * sum and difference of the entering and leaving pixels, the I sums, N*difference, and the MAC
- * of N*difference by sum = N*(new^2 - old^2). */
+ * of N*difference by sum = N*(new^2 - old^2). The MACs run in fractional mode, so NCQ holds
+ * 2*N*sum I^2 (< 2^28, exact): its high halves are floor(N*sum I^2 / 2^15), which pass 2 reads
+ * as 16-bit lanes. */
 	.align 4
 _ncc_pass1:
 	r7 = [p5 + CTX_N];
@@ -482,8 +651,8 @@ _ncc_pass1:
 	r6 = r6 +|+ r1;
 	r3.h = r1.h * r7.l, r3.l = r1.l * r7.l (is);
 .Lp1_i1:
-	a1 += r3.h * r1.h, a0 += r3.l * r1.l (is) || r1 = [i1 ++ m0] || nop;
-	r3 = a1, r2 = a0 (is) || r0 = [i0 ++ m0] || w[i2++] = r6.l;
+	a1 += r3.h * r1.h, a0 += r3.l * r1.l || r1 = [i1 ++ m0] || nop;
+	r3 = a1, r2 = a0 || r0 = [i0 ++ m0] || w[i2++] = r6.l;
 	w[i3++] = r6.h;
 	lsetup (.Lp1_s0, .Lp1_s1) lc0 = p3;
 .Lp1_s0:
@@ -491,7 +660,7 @@ _ncc_pass1:
 	r6 = r6 +|+ r5 || r1 = [i1 ++ m0] || [p1 ++ p2] = r3;
 	r5.h = r5.h * r7.l, r5.l = r5.l * r7.l (is) || w[i2++] = r6.l || nop;
 .Lp1_s1:
-	r3 = (a1 += r5.h * r4.h), r2 = (a0 += r5.l * r4.l) (is) || w[i3++] = r6.h || nop;
+	r3 = (a1 += r5.h * r4.h), r2 = (a0 += r5.l * r4.l) || w[i3++] = r6.h || nop;
 	[p1++] = r2;
 	[p1 ++ p2] = r3;
 	[p1++] = r2;
@@ -508,89 +677,89 @@ _ncc_pass1:
 	rts;
 
 /* ------------------------------------------------------------------------------------------- */
-/* Pass 2: window sums along each row of candidates, two rows (d, d+1) at once: SI in 16-bit
- * lanes from CST, N*SII for each row from NCQ; v = N*SII - SI^2 into V, and vmin. */
+/* Pass 2: a lower bound of vmin, the smallest window variance, for the selection's filter. In
+ * units of 2^15, two rows of candidates (d, d+1) as the two 16-bit lanes, sliding along each row:
+ *   SI lanes from CST (exact), Q lanes = window sums of floor(N*SII_column / 2^15) (the high
+ *   halves of NCQ, read by halfword loads), SI^2 / 2^15 rounded (a fractional dual multiply);
+ *   Q - SI^2/2^15 - 1 <= v / 2^15 for every candidate.
+ * Seven cycles per two candidates. vmin >= 2^15 * max(0, min over lanes - 1). */
 	.align 4
 _ncc_pass2:
-	[--sp] = rets;
 	r0 = [p5 + CTX_DSB];
 	m0 = r0;
-	r7.l = 0xffff;
+	p4 = 4;
+	r7.l = 0x7fff;
 	r7.h = 0x7fff;
-	r0 = [p5 + CTX_WT];
-	p4 = r0;
 	r0 = [p5 + CTX_S];
 	r1 = r0 << 1;
 	r1 += 1;
 	[p5 + CTX_T1] = r1;  /* 2s+1 steps */
 	r0 += 1;
 	p1 = r0;             /* s+1 pairs of rows */
-	r0 = 0;
-	[p5 + CTX_T0] = r0;  /* pair index */
+	r0 = [p5 + CTX_CST];
+	[p5 + CTX_T0] = r0;  /* CST column 0, rows (d, d+1) */
+	r0 = [p5 + CTX_NCQ];
+	r0 += 2;
+	[p5 + CTX_T2] = r0;  /* high half of NCQ row d, column 0 */
+	r0 = [p5 + CTX_NCQROW];
+	[p5 + CTX_T3] = r0;
+	r0 = r0 << 1;
+	[p5 + CTX_T4] = r0;
+	r0 = [p5 + CTX_WT];
+	[p5 + CTX_T5] = r0;
 	lsetup (.Lp2_0, .Lp2_1) lc1 = p1;
 .Lp2_0:
 	r0 = [p5 + CTX_T0];
-	r1 = r0 << 2;
-	r2 = [p5 + CTX_CST];
-	r2 = r2 + r1;
-	i0 = r2;
-	i1 = r2;
-	r1 = r0 << 1;
-	r2 = [p5 + CTX_NCQROW];
-	r3 = r2;
-	r3 *= r1;
-	r1 = [p5 + CTX_NCQ];
-	r1 = r1 + r3;
-	p0 = r1;
-	p2 = r1;
-	r1 = r1 + r2;
+	i0 = r0;
+	i1 = r0;
+	r0 += 4;
+	[p5 + CTX_T0] = r0;
+	r0 = [p5 + CTX_T2];
+	p0 = r0;
+	p2 = r0;
+	r1 = [p5 + CTX_T3];
+	r1 = r1 + r0;
 	p1 = r1;
 	p3 = r1;
-	r1 = r0 << 1;
-	r2 = [p5 + CTX_VROW];
-	r3 = r2;
-	r3 *= r1;
-	r1 = [p5 + CTX_V];
-	r1 = r1 + r3;
-	i2 = r1;
-	r1 = r1 + r2;
-	i3 = r1;
-	r0 += 1;
-	[p5 + CTX_T0] = r0;
+	r1 = [p5 + CTX_T4];
+	r0 = r0 + r1;
+	[p5 + CTX_T2] = r0;
 	r4 = 0;
 	r5 = 0;
-	r6 = 0;
-	mnop || r1 = [p2++] || r0 = [i1 ++ m0];
-	r2 = [p3++];
-	lsetup (.Lp2_i0, .Lp2_i1) lc0 = p4;
+	r0 = [p5 + CTX_T5];
+	lc0 = r0;
+	mnop || r2.l = w[p0 ++ p4] || r0 = [i1 ++ m0];
+	r2.h = w[p1 ++ p4];
+	lsetup (.Lp2_i0, .Lp2_i1) lc0;
 .Lp2_i0:
-	r4 = r4 +|+ r0 || r0 = [i1 ++ m0] || nop;
-	r5 = r5 + r1 (ns) || r1 = [p2++] || nop;
+	r5 = r5 +|+ r2 || r2.l = w[p0 ++ p4] || nop;
 .Lp2_i1:
-	r6 = r6 + r2 (ns) || r2 = [p3++] || nop;
-	i1 -= m0;
-	p2 += -4;
-	p3 += -4;
+	r4 = r4 +|+ r0 || r2.h = w[p1 ++ p4] || r0 = [i1 ++ m0];
+	i1 -= m0;            /* back to column w, the first to enter */
+	p0 += -4;
+	p1 += -4;
 	r0 = [p5 + CTX_T1];
 	lc0 = r0;
 	lsetup (.Lp2_s0, .Lp2_s1) lc0;
 .Lp2_s0:
-	r3 = r4.h * r4.h, r2 = r4.l * r4.l (is) || r0 = [i1 ++ m0] || r1 = [i0 ++ m0];
-	r2 = r5 - r2 (ns);
-	r3 = r6 - r3 (ns) || [i2++] = r2 || nop;
-	r7 = min(r7, r2) || [i3++] = r3 || nop;
-	r7 = min(r7, r3) || r2 = [p2++] || nop;
-	r0 = r0 -|- r1 || r3 = [p0++] || nop;
-	r4 = r4 +|+ r0 || r1 = [p3++] || nop;
-	r5 = r5 + r2 (ns) || r0 = [p1++] || nop;
-	r5 = r5 - r3 (ns);
-	r6 = r6 + r1 (ns);
+	r3.h = r4.h * r4.h, r3.l = r4.l * r4.l || r0 = [i1 ++ m0] || r1 = [i0 ++ m0];
+	r3 = r5 -|- r3 || r2.l = w[p0 ++ p4] || nop;
+	r7 = min(r7, r3) (v) || r2.h = w[p1 ++ p4] || nop;
+	r0 = r0 -|- r1 || r6.l = w[p2 ++ p4] || nop;
+	r4 = r4 +|+ r0 || r6.h = w[p3 ++ p4] || nop;
+	r2 = r2 -|- r6;
 .Lp2_s1:
-	r6 = r6 - r0 (ns);
+	r5 = r5 +|+ r2;
 .Lp2_1:
 	nop;
-	[p5 + CTX_VMIN] = r7;
-	rets = [sp++];
+	r0 = r7.l (x);
+	r1 = r7 >>> 16;
+	r0 = min(r0, r1);
+	r0 += -1;
+	r1 = 0;
+	r0 = max(r0, r1);
+	r0 = r0 << 15;
+	[p5 + CTX_VMIN] = r0;
 	rts;
 
 /* ------------------------------------------------------------------------------------------- */
@@ -619,6 +788,22 @@ _ncc_pass2:
 	EMIT3 "\mac", "\ld", "[i3++] = r6"
 	.elseif tt == 2
 	EMIT3 "\mac", "\ld", "[i3++] = r7"
+	.elseif pbuild == 0
+	EMIT3 "\mac", "\ld", "nop"
+	/* the copy program: load the chunk's pointers, then per pixel a byte load and two
+	 * halfword stores (one P-register access per cycle: the free slot of even cycles) */
+	.elseif tt == 4
+	EMIT3 "\mac", "\ld", "p0 = [p3++]"
+	.elseif tt == 6
+	EMIT3 "\mac", "\ld", "p1 = [p3++]"
+	.elseif tt == 8
+	EMIT3 "\mac", "\ld", "p2 = [p3++]"
+	.elseif (tt >= 10) && (tt < 10 + 6 * CHUNK) && (((tt - 10) % 6) == 0)
+	EMIT3 "\mac", "\ld", "r3 = b[p0++] (z)"
+	.elseif (tt >= 12) && (tt < 12 + 6 * CHUNK) && (((tt - 12) % 6) == 0)
+	EMIT3 "\mac", "\ld", "w[p1++] = r3"
+	.elseif (tt >= 14) && (tt < 14 + 6 * CHUNK) && (((tt - 14) % 6) == 0)
+	EMIT3 "\mac", "\ld", "w[p2++] = r3"
 	.else
 	EMIT3 "\mac", "\ld", "nop"
 	.endif
@@ -729,6 +914,22 @@ _ncc_pass2:
 	r6 = (a0 += a1) || r1 = [i1++] || r0 = [i0++];
 	.endm
 
+	/* one column pair: 2s+1 pairs of candidates (LC0 = P4), then the next column's pointers */
+	.macro MAC_COLUMNS r, lab, b
+	.set pbuild, \b
+	lsetup (\lab\()_c0, \lab\()_c1) lc1;
+\lab\()_c0:
+	lsetup (\lab\()_d0, \lab\()_d1) lc0 = p4;
+\lab\()_d0:
+	PAIR_BODY \r, \lab\()_d1
+	i1 = r4;
+	i2 = r5;
+	r4 += 4;
+	r5 += 4;
+\lab\()_c1:
+	r1 = [i1++];
+	.endm
+
 	.macro MACPASS r
 	.align 4
 _ncc_mac\r:
@@ -754,30 +955,40 @@ _ncc_mac\r:
 	r0 = [p5 + CTX_NP];
 	r0 += -8;
 	i3 = r0;
-	r4 = [p5 + CTX_S];
-	r5 = r4 << 1;
-	r5 += 1;
-	p1 = r5;             /* 2s+1 rows of candidates */
-	p2 = r4;             /* s pairs of columns */
-	p3 = [p5 + CTX_HE];
-	p4 = [p5 + CTX_HO];
-	i1 = p3;
-	i2 = p4;
-	p3 += 4;
-	p4 += 4;
+	r6 = [p5 + CTX_S];
+	r7 = r6 << 1;
+	r7 += 1;
+	p4 = r7;             /* 2s+1 rows of candidates */
+	r4 = [p5 + CTX_HE];
+	r5 = [p5 + CTX_HO];
+	i1 = r4;
+	i2 = r5;
+	r4 += 4;
+	r5 += 4;
 	r1 = [i1++];
 	r0 = [i0++];
-	lsetup (.Lmc\r\()_c0, .Lmc\r\()_c1) lc1 = p2;
-.Lmc\r\()_c0:
-	lsetup (.Lmc\r\()_d0, .Lmc\r\()_d1) lc0 = p1;
-.Lmc\r\()_d0:
-	PAIR_BODY \r, .Lmc\r\()_d1
-	i1 = p3;
-	i2 = p4;
-	p3 += 4;
-	p4 += 4;
-.Lmc\r\()_c1:
-	r1 = [i1++];
+	.if \r == 5
+	r7 = [p5 + CTX_PIPE];
+	cc = r7 == 0;
+	if cc jump .Lmc\r\()_plain;
+	/* the first NB column pairs also run the copy program */
+	p3 = [p5 + CTX_TAB];
+	r7 = [p5 + CTX_NB];
+	r6 = r6 - r7;
+	[p5 + CTX_T1] = r6;  /* the other column pairs (R6, R7 become results) */
+	lc1 = r7;
+	MAC_COLUMNS \r, .Lmb\r, 1
+	r3 = [p5 + CTX_T1];  /* (R0, R1 hold the next pair's first operands) */
+	cc = r3 == 0;
+	if cc jump .Lmc\r\()_last;
+	lc1 = r3;
+	jump .Lmc\r\()_cols;
+	.endif
+.Lmc\r\()_plain:
+	lc1 = r6;
+.Lmc\r\()_cols:
+	MAC_COLUMNS \r, .Lmc\r, 0
+.Lmc\r\()_last:
 	[i3++] = r6;
 	[i3++] = r7;
 	/* the last column */
@@ -794,7 +1005,7 @@ _ncc_mac\r:
 	i1 = r0;
 	r1 = [i1++];
 	r0 = [i0++];
-	lsetup (.Lms\r\()_0, .Lms\r\()_1) lc0 = p1;
+	lsetup (.Lms\r\()_0, .Lms\r\()_1) lc0 = p4;
 .Lms\r\()_0:
 	SINGLE_BODY \r, .Lms\r\()_1
 	[i3++] = r6;
@@ -850,43 +1061,51 @@ _ncc_mul64:
 	r1 = r3 + r5;
 	rts;
 
-/* _ncc_isqrt: R0 = floor(sqrt(R0)); clobbers R1-R5, LC1. */
+/* _ncc_isqrt: R0 = floor(sqrt(R0)), bit by bit from the top: y + b is kept when (y + b)^2 <= x.
+ * Clobbers R1-R5, LC1. */
 	.align 4
 _ncc_isqrt:
-	r1 = 0;
-	r2.l = 0;
-	r2.h = 0x4000;
-	p0 = 16;
-	lsetup (.Lq0, .Lq1) lc1 = p0;
+	cc = r0 == 0;
+	if cc jump .Lq_out;
+	r1.l = signbits r0;  /* bit length of x = 31 - R1 (x < 2^31) or 32 (x >= 2^31) */
+	r1 = r1.l (x);
+	r2 = 30;
+	r1 = r2 - r1;        /* bit length - 1 */
+	cc = r0 < 0;
+	if !cc jump .Lq_len;
+	r1 = 31;
+.Lq_len:
+	r1 >>= 1;            /* the root's top bit */
+	r2 = 1;
+	r2 <<= r1;
+	r1 += 1;
+	lc1 = r1;
+	r1 = 0;              /* y */
+	lsetup (.Lq0, .Lq1) lc1;
 .Lq0:
 	r3 = r1 + r2;
-	cc = r3 <= r0 (iu);
-	r4 = r0 - r3;
-	r1 >>= 1;
-	r5 = r1 + r2;
-	if cc r0 = r4;
-	if cc r1 = r5;
+	r4 = r3.l * r3.l (fu);
+	cc = r4 <= r0 (iu);
+	if cc r1 = r3;
 .Lq1:
-	r2 >>= 2;
+	r2 >>= 1;
 	r0 = r1;
+.Lq_out:
 	rts;
 
-/* _ncc_udiv: R0 = R0 / R1 (unsigned, truncating) for R1 < 2^16 and a quotient < 2^17; clobbers
- * R1-R6, LC1. */
+/* _ncc_udiv: R0 = R0 / R1 (unsigned, truncating) for R1 < 2^16 and a quotient < 2^17; the
+ * quotient bits enter R3 through CC. Clobbers R1-R4, LC1. */
 	.align 4
 _ncc_udiv:
 	r2 = r1 << 16;
 	r3 = 0;
-	r6 = 1;
 	p0 = 17;
 	lsetup (.Lv0, .Lv1) lc1 = p0;
 .Lv0:
-	r3 = r3 << 1;
 	cc = r2 <= r0 (iu);
 	r4 = r0 - r2;
-	r5 = r3 + r6;
 	if cc r0 = r4;
-	if cc r3 = r5;
+	r3 = rot r3 by 1;
 .Lv1:
 	r2 >>= 1;
 	r0 = r3;
@@ -1043,15 +1262,10 @@ _ncc_consider:
 	[p5 + CTX_T11] = r0;
 	[p5 + CTX_T12] = r1;
 	[p5 + CTX_T13] = r2;
-	r3 = [p5 + CTX_VROW];
-	r3 *= r1;
-	r4 = r0 << 2;
-	r3 = r3 + r4;
-	r4 = [p5 + CTX_V];
-	r3 = r3 + r4;
-	p0 = r3;
-	r1 = [p0];           /* v */
+	call _ncc_exactv;
+	r1 = r0;             /* v */
 	[p5 + CTX_T14] = r1;
+	r2 = [p5 + CTX_T13];
 	r0 = r2;
 	r2 = [p5 + CTX_BN];
 	r3 = [p5 + CTX_BV];
@@ -1089,6 +1303,41 @@ _ncc_consider:
 	rets = [sp++];
 	rts;
 
+/* _ncc_exactv: R0 = v = N*SII - SI^2 of candidate (e = R0, d = R1), exactly: SI from CST, N*SII
+ * from NCQ (which holds twice it). Clobbers R1-R3, P0-P2, LC1. */
+	.align 4
+_ncc_exactv:
+	r2 = [p5 + CTX_NCQROW];
+	r2 *= r1;
+	r3 = r0 << 2;
+	r2 = r2 + r3;
+	r3 = [p5 + CTX_NCQ];
+	r2 = r2 + r3;
+	p1 = r2;
+	r2 = [p5 + CTX_DSB];
+	p2 = r2;
+	r2 *= r0;
+	r3 = r1 << 1;
+	r2 = r2 + r3;
+	r3 = [p5 + CTX_CST];
+	r2 = r2 + r3;
+	p0 = r2;
+	r2 = [p5 + CTX_WT];
+	lc1 = r2;
+	r2 = 0;
+	r3 = 0;
+	r0 = w[p0 ++ p2] (z);
+	r1 = [p1++];
+	lsetup (.Lx0, .Lx1) lc1;
+.Lx0:
+	r2 = r2 + r0 (ns) || r0 = w[p0 ++ p2] (z) || nop;
+.Lx1:
+	r3 = r3 + r1 (ns) || r1 = [p1++] || nop;
+	r3 >>= 1;
+	r2 = r2.l * r2.l (is);
+	r0 = r3 - r2;
+	rts;
+
 /* _ncc_num: R2 = num of candidate (e = R0, d = R1); clobbers R3, R4, P0. */
 	.align 4
 _ncc_num:
@@ -1123,31 +1372,6 @@ _ncc_num:
 _ncc_select:
 	[--sp] = rets;
 	r0 = [p5 + CTX_VMIN];
-	cc = r0 == 0;
-	if !cc jump .Ls_vm;
-	/* flat windows score 0 and can only tie a best of 0: the filter uses the smallest
-	 * non-zero v (0 if every window is flat) */
-	p0 = [p5 + CTX_V];
-	r1 = [p5 + CTX_S];
-	r1 = r1 << 1;
-	r1 += 1;
-	r1 *= r1;
-	p1 = r1;
-	r6.l = 0xffff;
-	r6.h = 0x7fff;
-	r7 = r6;
-	lsetup (.Ls_z0, .Ls_z1) lc0 = p1;
-.Ls_z0:
-	r1 = [p0++];
-	cc = r1 == 0;
-	if cc r1 = r6;
-.Ls_z1:
-	r7 = min(r7, r1);
-	r0 = 0;
-	cc = r7 == r6;
-	if !cc r0 = r7;
-.Ls_vm:
-	[p5 + CTX_VMIN] = r0;
 	call _ncc_isqrt;
 	[p5 + CTX_QMIN] = r0;
 	/* the seed */
@@ -1167,15 +1391,10 @@ _ncc_select:
 	[p5 + CTX_BN] = r2;
 	r0 = [p5 + CTX_BE];
 	r1 = [p5 + CTX_BD];
-	r3 = [p5 + CTX_VROW];
-	r3 *= r1;
-	r2 = r0 << 2;
-	r3 = r3 + r2;
-	r2 = [p5 + CTX_V];
-	r3 = r3 + r2;
-	p0 = r3;
-	r2 = [p0];
-	[p5 + CTX_BV] = r2;
+	call _ncc_exactv;
+	[p5 + CTX_BV] = r0;
+	r0 = [p5 + CTX_BE];
+	r1 = [p5 + CTX_BD];
 	r4 = [p5 + CTX_S];
 	r5 = r0 - r4;
 	r5 = abs r5;
@@ -1188,24 +1407,19 @@ _ncc_select:
 	r5 = r5 + r0;
 	[p5 + CTX_BKEY] = r5;
 	call _ncc_tau;
-	/* the pairs of columns */
+	/* every pair of the column pairs, in one loop: the flagged pair is two behind the loads */
 	r0 = 8;
 	m0 = r0;
 	r0 = [p5 + CTX_NP];
-	[p5 + CTX_T15] = r0;     /* this column's pairs */
-	r0 = 0;
-	[p5 + CTX_T16] = r0;     /* e of its first column */
-	r0 = [p5 + CTX_S];
-	[p5 + CTX_T19] = r0;     /* columns left */
-.Ls_col:
-	r0 = [p5 + CTX_T15];
+	[p5 + CTX_T15] = r0;
 	i0 = r0;
 	r0 += 4;
 	i1 = r0;
 	r0 = [p5 + CTX_S];
-	r0 = r0 << 1;
-	r0 += 1;
-	p1 = r0;
+	r1 = r0 << 1;
+	r1 += 1;
+	r1 *= r0;
+	p1 = r1;             /* s*(2s+1) pairs */
 	r3 = [p5 + CTX_TAU];
 	mnop || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
 	cc = r3 < r3;
@@ -1216,24 +1430,9 @@ _ncc_select:
 	r2 = max(r0, r1) || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
 .Ls_p1:
 	cc = r3 <= r2;
-	if !cc jump .Ls_next;
+	if !cc jump .Ls_singles;
 	call .Ls_pair;
-.Ls_next:
-	r0 = [p5 + CTX_S];
-	r0 = r0 << 1;
-	r0 += 1;
-	r0 = r0 << 3;
-	r1 = [p5 + CTX_T15];
-	r1 = r1 + r0;
-	[p5 + CTX_T15] = r1;
-	r1 = [p5 + CTX_T16];
-	r1 += 2;
-	[p5 + CTX_T16] = r1;
-	r1 = [p5 + CTX_T19];
-	r1 += -1;
-	[p5 + CTX_T19] = r1;
-	cc = r1 == 0;
-	if !cc jump .Ls_col;
+.Ls_singles:
 	/* the last column: num of rows (2k, 2k+1) side by side */
 	r0 = [p5 + CTX_NS];
 	[p5 + CTX_T15] = r0;
@@ -1243,7 +1442,6 @@ _ncc_select:
 	r0 = [p5 + CTX_S];
 	r0 += 1;
 	p1 = r0;
-	r3 = [p5 + CTX_TAU];
 	mnop || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
 	cc = r3 < r3;
 	lsetup (.Ls_q0, .Ls_q1) lc0 = p1;
@@ -1264,41 +1462,56 @@ _ncc_select:
 .Ls_slow1:
 	call .Ls_single;
 	jump .Ls_back1;
-/* The flagged pair is two behind the loads: its index is (I0 - base) / 8 - 2. Keeps R0, R1,
- * I0, I1 (the sweep's); reloads R3 = tau. */
+/* The flagged pair's index is (I0 - base) / 8 - 2; for the column pairs it is p*(2s+1) + d.
+ * Keeps R0, R1, I0, I1, M0 and the sweep's loop registers; reloads R3 = tau. */
 .Ls_pair:
 	[--sp] = rets;
 	[--sp] = r0;
 	[--sp] = r1;
-	r4 = i0;
+	[--sp] = lc1;
+	[--sp] = lt1;
+	[--sp] = lb1;
+	r0 = i0;
 	r5 = [p5 + CTX_T15];
-	r4 = r4 - r5;
-	r4 >>= 3;
-	r4 += -2;
-	[p5 + CTX_T17] = r4;
-	r4 = r4 << 3;
+	r0 = r0 - r5;
+	r0 >>= 3;
+	r0 += -2;
+	r4 = r0 << 3;
 	r4 = r4 + r5;
 	p0 = r4;
 	r2 = [p0 + 4];
 	[p5 + CTX_T18] = r2;
 	r2 = [p0];
-	r0 = [p5 + CTX_T16];
-	r1 = [p5 + CTX_T17];
+	[p5 + CTX_T19] = r2;
+	r1 = [p5 + CTX_S];
+	r1 = r1 << 1;
+	r1 += 1;
+	[p5 + CTX_T17] = r0;
+	call _ncc_udiv;      /* p */
+	r1 = [p5 + CTX_S];
+	r1 = r1 << 1;
+	r1 += 1;
+	r1 *= r0;
+	r2 = [p5 + CTX_T17];
+	r1 = r2 - r1;        /* d */
+	r0 = r0 << 1;        /* e of the pair's first */
+	[p5 + CTX_T16] = r0;
+	[p5 + CTX_T17] = r1;
+	r2 = [p5 + CTX_T19];
 	call _ncc_consider;
 	r0 = [p5 + CTX_T16];
 	r0 += 1;
 	r1 = [p5 + CTX_T17];
 	r2 = [p5 + CTX_T18];
 	call _ncc_consider;
-	r1 = [sp++];
-	r0 = [sp++];
-	r3 = [p5 + CTX_TAU];
-	rets = [sp++];
-	rts;
+	jump .Ls_ret;
 .Ls_single:
 	[--sp] = rets;
 	[--sp] = r0;
 	[--sp] = r1;
+	[--sp] = lc1;
+	[--sp] = lt1;
+	[--sp] = lb1;
 	r4 = i0;
 	r5 = [p5 + CTX_T15];
 	r4 = r4 - r5;
@@ -1321,10 +1534,13 @@ _ncc_select:
 	r1 = [p5 + CTX_T17];
 	r1 += 1;
 	cc = r0 < r1;        /* d = 2s+1 only repeats d = 2s */
-	if cc jump .Ls_s1;
+	if cc jump .Ls_ret;
 	r2 = [p5 + CTX_T18];
 	call _ncc_consider;
-.Ls_s1:
+.Ls_ret:
+	lb1 = [sp++];
+	lt1 = [sp++];
+	lc1 = [sp++];
 	r1 = [sp++];
 	r0 = [sp++];
 	r3 = [p5 + CTX_TAU];
@@ -1447,6 +1663,8 @@ _bvb_ncc_scoremap_asm:
 	r1 = [sp + 56];
 	[p5 + CTX_Y] = r1;
 	call _ncc_layout;
+	r0 = 0;
+	[p5 + CTX_PIPE] = r0;    /* one point: nothing to copy ahead */
 	r0 = [p5 + CTX_X];
 	r1 = [p5 + CTX_Y];
 	r2 = [p5 + CTX_R];
@@ -1484,18 +1702,13 @@ _bvb_ncc_scoremap_asm:
 	r0 = [p5 + CTX_T15];
 	r1 = [p5 + CTX_T16];
 	call _ncc_num;
+	[p5 + CTX_T17] = r2;
 	r0 = [p5 + CTX_T15];
 	r1 = [p5 + CTX_T16];
-	r3 = [p5 + CTX_VROW];
-	r3 *= r1;
-	r0 = r0 << 2;
-	r3 = r3 + r0;
-	r0 = [p5 + CTX_V];
-	r3 = r3 + r0;
-	p0 = r3;
-	r0 = r2;
+	call _ncc_exactv;
+	r2 = r0;
+	r0 = [p5 + CTX_T17];
 	r1 = [p5 + CTX_VT];
-	r2 = [p0];
 	call _ncc_score;
 	p3 = [p5 + CTX_RES];
 	w[p3++] = r0;
