@@ -37,12 +37,12 @@
 #define CTX_HO 48     /* word m of row k: (I[2m+1], I[2m+2]) */
 #define CTX_TF 52     /* T' flat, N halfwords and a zero */
 #define CTX_TP 56     /* T' rows as (0, T'0, ..., T'2r): r+1 words each */
-#define CTX_CST 60    /* column sums of I: column c at CST + c*DSB, halfword d */
-#define CTX_NCQ 64    /* column sums of N*I^2: row d at NCQ + d*NCQROW, word c */
+#define CTX_CS2 60    /* 2r-row column sums of I at rows 2k: column c at CS2 + c*KSB, halfword k */
+#define CTX_NQ2 64    /* the same for floor(n*sum I^2 / 2^15), n = 4r^2 */
 #define CTX_NP 72     /* num of candidate pairs: (p*(2s+1) + d)*8, lanes e = 2p, 2p+1 */
 #define CTX_NS 76     /* num of the last column, e = 2s: word d */
-#define CTX_DSB 80    /* (2s+2)*2 */
-#define CTX_NCQROW 84 /* (L+1)*4 */
+#define CTX_KSB 80    /* 2*KS, KS = s+1 rounded up to even (row k = s+1 repeats k = s) */
+#define CTX_NSUB 84   /* n = 4r^2 */
 #define CTX_X 92
 #define CTX_Y 96
 #define CTX_VT 100
@@ -269,10 +269,11 @@ _ncc_layout:
 	r2 = r2 << 1;
 	r2 += 1;
 	[p5 + CTX_L] = r2;
+	r5 = r3 << 1;
+	r5 *= r5;
+	[p5 + CTX_NSUB] = r5;
 	r5 = r2;
 	r5 += 1;
-	r6 = r5 << 2;
-	[p5 + CTX_NCQROW] = r6;
 	r5 = r5 << 1;
 	[p5 + CTX_HEROW] = r5;
 	r6 = r2;
@@ -297,21 +298,17 @@ _ncc_layout:
 	r5 *= r0;
 	r5 = r5 << 2;
 	r7 = r7 + r5;
-	[p5 + CTX_CST] = r7;
+	[p5 + CTX_CS2] = r7;
 	r5 = r4;
-	r5 += 1;
-	r6 = r5 << 2;
-	[p5 + CTX_DSB] = r6;
+	r5 += 2;
+	r5 >>= 1;
+	r5 = r5 << 2;        /* KSB = 2 * (s+1 rounded up to even) */
+	[p5 + CTX_KSB] = r5;
 	r6 = r2;
 	r6 += 1;
-	r6 *= r5;
-	r6 = r6 << 2;
+	r6 *= r5;            /* L+1 columns */
 	r7 = r7 + r6;
-	[p5 + CTX_NCQ] = r7;
-	r5 = r4 << 1;
-	r5 += 2;             /* 2s+2 rows */
-	r6 = [p5 + CTX_NCQROW];
-	r6 *= r5;
+	[p5 + CTX_NQ2] = r7;
 	r7 = r7 + r6;
 	r7 += 8;             /* two words for the pipeline's first (empty) stores */
 	[p5 + CTX_NP] = r7;
@@ -427,14 +424,8 @@ _ncc_prebuild:
 	if !cc jump .Lpb_next;
 	r3 = r1 + r2;
 	cc = r3 < r7;
-	if cc jump .Lpb_found;
-.Lpb_next:
-	r5 += -1;
-	cc = r5 <= 0;
-	if !cc jump .Lpb_scan;
-.Lpb_none:
-	rts;
-.Lpb_found:
+	if !cc jump .Lpb_next;
+	/* found: six running pointers (source, He, Ho for both chunks), one store and one add a cycle */
 	r1 = r1 - r2;
 	r3 = [p5 + CTX_STRIDE];
 	r1 *= r3;
@@ -448,23 +439,30 @@ _ncc_prebuild:
 	r4 = [p5 + CTX_L];
 	p1 = r4;
 	r4 += -CHUNK;        /* the second chunk's first pixel */
-	r5 = r4 << 1;
+	r7 = r0 + r4;
+	r4 = r4 << 1;
+	r5 = r1 + r4;
+	r4 = r2 + r4;
 	r6 = [p5 + CTX_HEROW];
+	r4 = r4 - r6;        /* the last pointer advances first */
 	p0 = [p5 + CTX_TAB];
 	lsetup (.Lpb_0, .Lpb_1) lc0 = p1;
 .Lpb_0:
-	r7 = r0 + r4 (ns) || [p0++] = r0 || nop;
-	[p0++] = r1;
-	[p0++] = r2;
-	[p0++] = r7;
-	r7 = r1 + r5 (ns) || nop || nop;
-	r0 = r0 + r3 (ns) || [p0++] = r7 || nop;
-	r7 = r2 + r5 (ns) || nop || nop;
-	r1 = r1 + r6 (ns) || [p0++] = r7 || nop;
+	r4 = r4 + r6 (ns) || [p0++] = r0 || nop;
+	r0 = r0 + r3 (ns) || [p0++] = r1 || nop;
+	r1 = r1 + r6 (ns) || [p0++] = r2 || nop;
+	r2 = r2 + r6 (ns) || [p0++] = r7 || nop;
+	r7 = r7 + r3 (ns) || [p0++] = r5 || nop;
 .Lpb_1:
-	r2 = r2 + r6 (ns);
+	r5 = r5 + r6 (ns) || [p0++] = r4 || nop;
 	r0 = 1;
 	[p5 + CTX_PRE] = r0;
+	rts;
+.Lpb_next:
+	r5 += -1;
+	cc = r5 <= 0;
+	if !cc jump .Lpb_scan (bp);
+.Lpb_none:
 	rts;
 
 /* ------------------------------------------------------------------------------------------- */
@@ -604,110 +602,122 @@ _ncc_build:
 	rts;
 
 /* ------------------------------------------------------------------------------------------- */
-/* Pass 1: for each pair of columns (2m, 2m+1) of He, sliding down: the column sums of I over
- * w = 2r+1 rows (16-bit lanes) into CST (column-major, rows d = 0..2s, then d = 2s+1 repeating
- * 2s), and of N*I^2 (A0, A1) into NCQ (row-major, same rows). One step is four cycles:
- * sum and difference of the entering and leaving pixels, the I sums, N*difference, and the MAC
- * of N*difference by sum = N*(new^2 - old^2). The MACs run in fractional mode, so NCQ holds
- * 2*N*sum I^2 (< 2^28, exact): its high halves are floor(N*sum I^2 / 2^15), which pass 2 reads
- * as 16-bit lanes. */
+/* Pass 1, for the selection's filter. Every (2r+1)^2 window contains a 2r x 2r sub-window at even
+ * coordinates of the search area, and for such a sub-window (n = 4r^2 pixels)
+ *     u = n*sum I^2 - (sum I)^2 = n*sum (I - Isub)^2  <=  n*sum over the window (I - I)^2  <=  v,
+ * so the smallest u bounds the smallest v from below. Pass 1 makes the sub-windows' column sums:
+ * for each pair of columns (2m, 2m+1) of He, sums over 2r rows starting at the even rows 2k
+ * (k = 0..s), sliding down two rows a step: I in 16-bit lanes into CS2, n*I^2 (fractional MACs,
+ * truncated to the high half: floor(n*sum I^2 / 2^15)) into NQ2, both column-major so that pass
+ * 2 loads rows (k, k+1) as one word. Eight cycles a step: for each of the two rows, the sum and
+ * difference of the entering and leaving pixels, n*difference, the MAC of it by the sum
+ * (= n*(new^2 - old^2)), and the I sums. */
 	.align 4
 _ncc_pass1:
-	r7 = [p5 + CTX_N];
+	r7 = [p5 + CTX_NSUB];
 	r0 = [p5 + CTX_HEROW];
 	m0 = r0;
-	r0 = [p5 + CTX_DSB];
+	r0 = [p5 + CTX_KSB];
 	m1 = r0;
-	r0 = [p5 + CTX_NCQROW];
-	r0 += -4;
-	p2 = r0;
-	r1 = [p5 + CTX_S];
-	r1 = r1 << 1;
-	p3 = r1;             /* 2s steps */
-	r0 = [p5 + CTX_WT];
-	p4 = r0;
-	r0 = [p5 + CTX_NCQ];
+	p3 = r0;
+	r0 = [p5 + CTX_S];
+	p4 = r0;             /* s steps */
+	r0 = [p5 + CTX_R];
+	r0 = r0 << 1;
+	[p5 + CTX_T1] = r0;  /* 2r rows */
+	r0 = [p5 + CTX_HE];
 	[p5 + CTX_T0] = r0;
-	p0 = [p5 + CTX_HE];
-	r0 = [p5 + CTX_CST];
+	p1 = [p5 + CTX_CS2];
+	p2 = [p5 + CTX_NQ2];
+	r0 = p1;
+	r1 = [p5 + CTX_KSB];
+	r0 = r0 + r1;
 	i2 = r0;
-	r1 = [p5 + CTX_DSB];
+	r0 = p2;
 	r0 = r0 + r1;
 	i3 = r0;
 	r0 = [p5 + CTX_L];
 	r0 += 1;
 	r0 >>= 1;
-	p1 = r0;             /* (L+1)/2 column pairs */
-	lsetup (.Lp1_c0, .Lp1_c1) lc1 = p1;
+	lc1 = r0;            /* (L+1)/2 column pairs */
+	lsetup (.Lp1_c0, .Lp1_c1) lc1;
 .Lp1_c0:
-	i0 = p0;
-	i1 = p0;
-	p1 = [p5 + CTX_T0];
+	r0 = [p5 + CTX_T0];
+	i0 = r0;
+	i1 = r0;
+	r0 += 4;
+	[p5 + CTX_T0] = r0;
 	r6 = 0;
-	a1 = a0 = 0;
-	r1 = [i1 ++ m0];
-	lsetup (.Lp1_i0, .Lp1_i1) lc0 = p4;
+	a1 = a0 = 0 || r1 = [i1 ++ m0] || nop;
+	r0 = [p5 + CTX_T1];
+	lc0 = r0;
+	lsetup (.Lp1_i0, .Lp1_i1) lc0;
 .Lp1_i0:
 	r6 = r6 +|+ r1;
 	r3.h = r1.h * r7.l, r3.l = r1.l * r7.l (is);
 .Lp1_i1:
-	a1 += r3.h * r1.h, a0 += r3.l * r1.l || r1 = [i1 ++ m0] || nop;
-	r3 = a1, r2 = a0 || r0 = [i0 ++ m0] || w[i2++] = r6.l;
-	w[i3++] = r6.h;
-	lsetup (.Lp1_s0, .Lp1_s1) lc0 = p3;
+	r2.h = (a1 += r3.h * r1.h), r2.l = (a0 += r3.l * r1.l) (t) || r1 = [i1 ++ m0] || nop;
+	r0 = [i0 ++ m0];
+	lsetup (.Lp1_s0, .Lp1_s1) lc0 = p4;
 .Lp1_s0:
-	r4 = r1 +|+ r0, r5 = r1 -|- r0 || r0 = [i0 ++ m0] || [p1++] = r2;
-	r6 = r6 +|+ r5 || r1 = [i1 ++ m0] || [p1 ++ p2] = r3;
-	r5.h = r5.h * r7.l, r5.l = r5.l * r7.l (is) || w[i2++] = r6.l || nop;
+	r4 = r1 +|+ r0, r5 = r1 -|- r0 || r0 = [i0 ++ m0] || w[p1++] = r6;
+	r3.h = r5.h * r7.l, r3.l = r5.l * r7.l (is) || r1 = [i1 ++ m0] || w[i2++] = r6.h;
+	a1 += r3.h * r4.h, a0 += r3.l * r4.l || w[p2++] = r2 || nop;
+	r6 = r6 +|+ r5 || w[i3++] = r2.h || nop;
+	r4 = r1 +|+ r0, r5 = r1 -|- r0 || r0 = [i0 ++ m0] || nop;
+	r3.h = r5.h * r7.l, r3.l = r5.l * r7.l (is) || r1 = [i1 ++ m0] || nop;
+	r6 = r6 +|+ r5;
 .Lp1_s1:
-	r3 = (a1 += r5.h * r4.h), r2 = (a0 += r5.l * r4.l) || w[i3++] = r6.h || nop;
-	[p1++] = r2;
-	[p1 ++ p2] = r3;
-	[p1++] = r2;
-	[p1 ++ p2] = r3;
-	w[i2++] = r6.l;
-	w[i3++] = r6.h;
+	r2.h = (a1 += r3.h * r4.h), r2.l = (a0 += r3.l * r4.l) (t);
+	/* row k = s; with s even also k = s+1 repeating it (KS = s+2) */
+	w[p1++] = r6;
+	w[i2++] = r6.h;
+	w[p2++] = r2;
+	w[i3++] = r2.h;
+	r0 = [p5 + CTX_S];
+	cc = bittst(r0, 0);
+	if cc jump .Lp1_odd;
+	w[p1++] = r6;
+	w[i2++] = r6.h;
+	w[p2++] = r2;
+	w[i3++] = r2.h;
+.Lp1_odd:
+	/* each pointer is at the end of its column: skip the other lane's */
+	p1 = p1 + p3;
+	p2 = p2 + p3;
 	i2 += m1;
-	i3 += m1;
-	p0 += 4;
-	r0 = [p5 + CTX_T0];
-	r0 += 8;
 .Lp1_c1:
-	[p5 + CTX_T0] = r0;
+	i3 += m1;
 	rts;
 
 /* ------------------------------------------------------------------------------------------- */
-/* Pass 2: a lower bound of vmin, the smallest window variance, for the selection's filter. In
- * units of 2^15, two rows of candidates (d, d+1) as the two 16-bit lanes, sliding along each row:
- *   SI lanes from CST (exact), Q lanes = window sums of floor(N*SII_column / 2^15) (the high
- *   halves of NCQ, read by halfword loads), SI^2 / 2^15 rounded (a fractional dual multiply);
- *   Q - SI^2/2^15 - 1 <= v / 2^15 for every candidate.
- * Seven cycles per two candidates. vmin >= 2^15 * max(0, min over lanes - 1). */
+/* Pass 2: the smallest u of the 2r x 2r sub-windows at even coordinates, from below, in units of
+ * 2^15: rows k, k+1 (sub-windows starting at rows 2k, 2k+2) as the two 16-bit lanes, sliding two
+ * columns a step; S = sum I (exact), Q = sum floor(n*I^2 column sums / 2^15), and
+ *     u / 2^15 >= Q - round(S^2 / 2^15) - 1        (S^2 / 2^15 by a fractional dual multiply).
+ * Eleven cycles per two sub-windows. vmin >= u_min >= 2^15 * max(0, min over lanes - 1). */
 	.align 4
 _ncc_pass2:
-	r0 = [p5 + CTX_DSB];
+	r0 = [p5 + CTX_KSB];
 	m0 = r0;
-	p4 = 4;
+	p4 = r0;
 	r7.l = 0x7fff;
 	r7.h = 0x7fff;
-	r0 = [p5 + CTX_S];
-	r1 = r0 << 1;
-	r1 += 1;
-	[p5 + CTX_T1] = r1;  /* 2s+1 steps */
-	r0 += 1;
-	p1 = r0;             /* s+1 pairs of rows */
-	r0 = [p5 + CTX_CST];
-	[p5 + CTX_T0] = r0;  /* CST column 0, rows (d, d+1) */
-	r0 = [p5 + CTX_NCQ];
-	r0 += 2;
-	[p5 + CTX_T2] = r0;  /* high half of NCQ row d, column 0 */
-	r0 = [p5 + CTX_NCQROW];
-	[p5 + CTX_T3] = r0;
+	r0 = [p5 + CTX_R];
 	r0 = r0 << 1;
-	[p5 + CTX_T4] = r0;
-	r0 = [p5 + CTX_WT];
-	[p5 + CTX_T5] = r0;
-	lsetup (.Lp2_0, .Lp2_1) lc1 = p1;
+	[p5 + CTX_T1] = r0;  /* 2r columns */
+	r0 = [p5 + CTX_S];
+	r1 = r0;
+	r1 += 1;
+	[p5 + CTX_T3] = r1;  /* s+1 sub-windows a row */
+	r0 += 2;
+	r0 >>= 1;
+	lc1 = r0;            /* pairs of rows */
+	r0 = [p5 + CTX_CS2];
+	[p5 + CTX_T0] = r0;
+	r0 = [p5 + CTX_NQ2];
+	[p5 + CTX_T2] = r0;
+	lsetup (.Lp2_0, .Lp2_1) lc1;
 .Lp2_0:
 	r0 = [p5 + CTX_T0];
 	i0 = r0;
@@ -716,40 +726,37 @@ _ncc_pass2:
 	[p5 + CTX_T0] = r0;
 	r0 = [p5 + CTX_T2];
 	p0 = r0;
-	p2 = r0;
-	r1 = [p5 + CTX_T3];
-	r1 = r1 + r0;
-	p1 = r1;
-	p3 = r1;
-	r1 = [p5 + CTX_T4];
-	r0 = r0 + r1;
+	p1 = r0;
+	r0 += 4;
 	[p5 + CTX_T2] = r0;
 	r4 = 0;
 	r5 = 0;
-	r0 = [p5 + CTX_T5];
+	r0 = [p5 + CTX_T1];
 	lc0 = r0;
-	mnop || r2.l = w[p0 ++ p4] || r0 = [i1 ++ m0];
-	r2.h = w[p1 ++ p4];
+	mnop || r1 = [p1 ++ p4] || r0 = [i1 ++ m0];
 	lsetup (.Lp2_i0, .Lp2_i1) lc0;
 .Lp2_i0:
-	r5 = r5 +|+ r2 || r2.l = w[p0 ++ p4] || nop;
+	r4 = r4 +|+ r0 || r0 = [i1 ++ m0] || nop;
 .Lp2_i1:
-	r4 = r4 +|+ r0 || r2.h = w[p1 ++ p4] || r0 = [i1 ++ m0];
-	i1 -= m0;            /* back to column w, the first to enter */
-	p0 += -4;
-	p1 += -4;
-	r0 = [p5 + CTX_T1];
+	r5 = r5 +|+ r1 || r1 = [p1 ++ p4] || nop;
+	i1 -= m0;            /* back to column 2r, the first to enter */
+	p1 -= p4;
+	r0 = [p5 + CTX_T3];
 	lc0 = r0;
 	lsetup (.Lp2_s0, .Lp2_s1) lc0;
 .Lp2_s0:
-	r3.h = r4.h * r4.h, r3.l = r4.l * r4.l || r0 = [i1 ++ m0] || r1 = [i0 ++ m0];
-	r3 = r5 -|- r3 || r2.l = w[p0 ++ p4] || nop;
-	r7 = min(r7, r3) (v) || r2.h = w[p1 ++ p4] || nop;
-	r0 = r0 -|- r1 || r6.l = w[p2 ++ p4] || nop;
-	r4 = r4 +|+ r0 || r6.h = w[p3 ++ p4] || nop;
-	r2 = r2 -|- r6;
+	r3.h = r4.h * r4.h, r3.l = r4.l * r4.l || r0 = [i1 ++ m0] || r1 = [p1 ++ p4];
+	r3 = r5 -|- r3 || r2 = [i1 ++ m0] || r6 = [p1 ++ p4];
+	r7 = min(r7, r3) (v) || r3 = [i0 ++ m0] || nop;
+	r0 = r0 +|+ r2 || r2 = [i0 ++ m0] || nop;
+	r0 = r0 -|- r3 || r3 = [p0 ++ p4] || nop;
+	r0 = r0 -|- r2 || r2 = [p0 ++ p4] || nop;
+	r4 = r4 +|+ r0;
+	r1 = r1 +|+ r6;
+	r1 = r1 -|- r3;
+	r1 = r1 -|- r2;
 .Lp2_s1:
-	r5 = r5 +|+ r2;
+	r5 = r5 +|+ r1;
 .Lp2_1:
 	nop;
 	r0 = r7.l (x);
@@ -1072,9 +1079,8 @@ _ncc_isqrt:
 	r2 = 30;
 	r1 = r2 - r1;        /* bit length - 1 */
 	cc = r0 < 0;
-	if !cc jump .Lq_len;
-	r1 = 31;
-.Lq_len:
+	r3 = 31;
+	if cc r1 = r3;
 	r1 >>= 1;            /* the root's top bit */
 	r2 = 1;
 	r2 <<= r1;
@@ -1234,10 +1240,18 @@ _ncc_tau:
 	if cc r0 = r3;       /* ceil(sqrt(v_b)) */
 	r1 = r0;
 	r0 = [p5 + CTX_QMIN];
-	r0 = r0 << 15;
-	call _ncc_udiv;
-	r1 = 32767;
-	r0 = min(r0, r1);
+	r2 = 32767;
+	cc = r0 < r1;
+	if !cc jump .Lu_f;   /* vmin and v_b share their ceiling root: f = 32767 */
+	r0 = r0 << 16;       /* (qmin << 15), doubled for DIVS/DIVQ */
+	divs (r0, r1);
+	p0 = 15;
+	lsetup (.Lu_d, .Lu_d) lc1 = p0;
+.Lu_d:
+	divq (r0, r1);
+	r2 = r0.l (z);
+.Lu_f:
+	r0 = r2;
 	r2 = [p5 + CTX_BN];
 	r3 = r2 >> 15;
 	r3 = r3.l * r0.l (is);
@@ -1255,10 +1269,17 @@ _ncc_tau:
  * best so far (exact comparison), or ties it and comes first in the tie order. */
 	.align 4
 _ncc_consider:
-	[--sp] = rets;
 	r3 = [p5 + CTX_TAU];
 	cc = r2 < r3;
-	if cc jump .Lk_out;
+	if cc jump .Lk_ret;
+	r3 = [p5 + CTX_BE];
+	cc = r0 == r3;
+	if !cc jump .Lk_go;
+	r3 = [p5 + CTX_BD];
+	cc = r1 == r3;
+	if cc jump .Lk_ret;  /* the best itself */
+.Lk_go:
+	[--sp] = rets;
 	[p5 + CTX_T11] = r0;
 	[p5 + CTX_T12] = r1;
 	[p5 + CTX_T13] = r2;
@@ -1301,41 +1322,57 @@ _ncc_consider:
 	call _ncc_tau;
 .Lk_out:
 	rets = [sp++];
+.Lk_ret:
 	rts;
 
-/* _ncc_exactv: R0 = v = N*SII - SI^2 of candidate (e = R0, d = R1), exactly: SI from CST, N*SII
- * from NCQ (which holds twice it). Clobbers R1-R3, P0-P2, LC1. */
+/* _ncc_exactv: R0 = v = N*SII - SI^2 of candidate (e = R0, d = R1), exactly, from the 16-bit
+ * pixels: per row r full words of He (e even) or Ho (e odd) and the low half of one more.
+ * Clobbers R1-R6, P0-P2, A0-A1, both hardware loops. */
 	.align 4
 _ncc_exactv:
-	r2 = [p5 + CTX_NCQROW];
+	r2 = [p5 + CTX_HEROW];
 	r2 *= r1;
-	r3 = r0 << 2;
+	r3 = r0 << 1;
 	r2 = r2 + r3;
-	r3 = [p5 + CTX_NCQ];
-	r2 = r2 + r3;
-	p1 = r2;
-	r2 = [p5 + CTX_DSB];
-	p2 = r2;
-	r2 *= r0;
-	r3 = r1 << 1;
-	r2 = r2 + r3;
-	r3 = [p5 + CTX_CST];
+	r3 = [p5 + CTX_HE];
+	r4 = [p5 + CTX_HO];
+	r4 += -2;
+	cc = bittst(r0, 0);
+	if cc r3 = r4;
 	r2 = r2 + r3;
 	p0 = r2;
-	r2 = [p5 + CTX_WT];
-	lc1 = r2;
-	r2 = 0;
-	r3 = 0;
-	r0 = w[p0 ++ p2] (z);
-	r1 = [p1++];
-	lsetup (.Lx0, .Lx1) lc1;
-.Lx0:
-	r2 = r2 + r0 (ns) || r0 = w[p0 ++ p2] (z) || nop;
-.Lx1:
-	r3 = r3 + r1 (ns) || r1 = [p1++] || nop;
-	r3 >>= 1;
-	r2 = r2.l * r2.l (is);
-	r0 = r3 - r2;
+	r4 = [p5 + CTX_R];
+	p1 = r4;             /* full words a row */
+	r5 = r4 << 2;
+	r5 += 4;
+	r6 = [p5 + CTX_HEROW];
+	r6 = r6 - r5;
+	p2 = r6;             /* to the next row */
+	r5 = [p5 + CTX_WT];
+	lc1 = r5;
+	r6 = 0;
+	a1 = a0 = 0;
+	lsetup (.Lx_r0, .Lx_r1) lc1;
+.Lx_r0:
+	r1 = [p0++];
+	lsetup (.Lx_q0, .Lx_q1) lc0 = p1;
+.Lx_q0:
+	r6 = r6 +|+ r1;
+.Lx_q1:
+	a1 += r1.h * r1.h, a0 += r1.l * r1.l (is) || r1 = [p0++] || nop;
+	r1 = r1.l (z);
+	r6 = r6 +|+ r1;
+	a0 += r1.l * r1.l (is);
+.Lx_r1:
+	p0 = p0 + p2;
+	r0 = r6.l (z);
+	r1 = r6 >> 16;
+	r0 = r0 + r1;        /* SI */
+	r3 = a1 + a0, r2 = a1 - a0;
+	r1 = [p5 + CTX_N];
+	r3 *= r1;
+	r0 = r0.l * r0.l (is);
+	r0 = r3 - r0;
 	rts;
 
 /* _ncc_num: R2 = num of candidate (e = R0, d = R1); clobbers R3, R4, P0. */
@@ -1430,7 +1467,7 @@ _ncc_select:
 	r2 = max(r0, r1) || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
 .Ls_p1:
 	cc = r3 <= r2;
-	if !cc jump .Ls_singles;
+	if !cc jump .Ls_singles (bp);
 	call .Ls_pair;
 .Ls_singles:
 	/* the last column: num of rows (2k, 2k+1) side by side */
@@ -1451,7 +1488,7 @@ _ncc_select:
 	r2 = max(r0, r1) || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
 .Ls_q1:
 	cc = r3 <= r2;
-	if !cc jump .Ls_end;
+	if !cc jump .Ls_end (bp);
 	call .Ls_single;
 .Ls_end:
 	rets = [sp++];
@@ -1471,6 +1508,9 @@ _ncc_select:
 	[--sp] = lc1;
 	[--sp] = lt1;
 	[--sp] = lb1;
+	[--sp] = lc0;
+	[--sp] = lt0;
+	[--sp] = lb0;
 	r0 = i0;
 	r5 = [p5 + CTX_T15];
 	r0 = r0 - r5;
@@ -1483,11 +1523,10 @@ _ncc_select:
 	[p5 + CTX_T18] = r2;
 	r2 = [p0];
 	[p5 + CTX_T19] = r2;
-	r1 = [p5 + CTX_S];
-	r1 = r1 << 1;
-	r1 += 1;
 	[p5 + CTX_T17] = r0;
-	call _ncc_udiv;      /* p */
+	r1 = [p5 + CTX_RECIP];
+	r0 = r0.l * r1.l (is);
+	r0 >>= 16;           /* p = index / (2s+1), exact for index < 2^16 / (2s+1) */
 	r1 = [p5 + CTX_S];
 	r1 = r1 << 1;
 	r1 += 1;
@@ -1512,6 +1551,9 @@ _ncc_select:
 	[--sp] = lc1;
 	[--sp] = lt1;
 	[--sp] = lb1;
+	[--sp] = lc0;
+	[--sp] = lt0;
+	[--sp] = lb0;
 	r4 = i0;
 	r5 = [p5 + CTX_T15];
 	r4 = r4 - r5;
@@ -1538,6 +1580,9 @@ _ncc_select:
 	r2 = [p5 + CTX_T18];
 	call _ncc_consider;
 .Ls_ret:
+	lb0 = [sp++];
+	lt0 = [sp++];
+	lc0 = [sp++];
 	lb1 = [sp++];
 	lt1 = [sp++];
 	lc1 = [sp++];
@@ -1559,7 +1604,7 @@ _ncc_score:
 	r1 = r2;
 	call _ncc_mul64;     /* P = vt * v */
 	cc = r1 == 0;
-	if !cc jump .Lsc_hi;
+	if !cc jump .Lsc_hi (bp);
 	cc = r0 == 0;
 	if cc jump .Lsc_zero;
 	r2 = 32;
@@ -1690,8 +1735,6 @@ _bvb_ncc_scoremap_asm:
 	cc = r0 == 0;
 	if cc jump .Lsm_zero;
 	call _ncc_build;
-	call _ncc_pass1;
-	call _ncc_pass2;
 	call _ncc_macpass;
 	r0 = 0;
 	[p5 + CTX_T16] = r0;  /* d */

@@ -62,17 +62,16 @@
 
 /* Scratch of the assembly, in bytes (L = 2s+2r+1 is the side of the search area, w = 2r+1,
  * N = w^2): a context block, two 16-bit copies of the search area (even and odd word alignment),
- * the zero-mean template flat and with padded rows, column sums of I and N*I^2, the numerators;
- * for r = 5 and 5 <= s <= 10 also a spare pair of copies (the next point's search area, copied
- * while this point's MACs run) and the copy program (12 bytes per pair of candidates of the
- * column pairs that run it, at most 4L + 2s + 1 of them). */
+ * the zero-mean template flat and with padded rows, the 2r-row column sums of the filter's
+ * sub-windows, the numerators; for r = 5 and 5 <= s <= 10 also a spare pair of copies (the next
+ * point's search area, copied while this point's MACs run) and the copy program (12 bytes per
+ * pair of candidates of the column pairs that run it, at most 4L + 2s + 1 of them). */
 #define BVB_NCC_L(r, s) (2 * (s) + 2 * (r) + 1)
 #define BVB_NCC_PIPELINED(r, s) ((r) == 5 && (s) >= 5 && (s) <= 10)
 #define BVB_NCC_SCRATCH_SIZE(r, s)                                                                 \
   (320 + 4 * BVB_NCC_L(r, s) * (BVB_NCC_L(r, s) + 1) + 4                                          \
    + 4 * (((2 * (r) + 1) * (2 * (r) + 1) + 1) / 2) + 4 * (2 * (r) + 1) * ((r) + 1)                \
-   + 4 * (BVB_NCC_L(r, s) + 1) * ((s) + 1) + 4 * (2 * (s) + 2) * (BVB_NCC_L(r, s) + 1)            \
-   + 4 * (2 * (s) + 2) * (2 * (s) + 2)                                                             \
+   + 8 * (BVB_NCC_L(r, s) + 1) * (((s) + 2) / 2) + 4 * (2 * (s) + 2) * (2 * (s) + 2)               \
    + (BVB_NCC_PIPELINED(r, s)                                                                      \
           ? 4 * BVB_NCC_L(r, s) * (BVB_NCC_L(r, s) + 1) + 4 + 12 * (4 * BVB_NCC_L(r, s) + 2 * (s) + 1) \
           : 0))
