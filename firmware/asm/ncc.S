@@ -41,7 +41,7 @@
 #define CTX_NQ2 64    /* the same for floor(n*sum I^2 / 2^15), n = 4r^2 */
 #define CTX_NP 72     /* num of candidate pairs: (p*(2s+1) + d)*8, lanes e = 2p, 2p+1 */
 #define CTX_NS 76     /* num of the last column, e = 2s: word d */
-#define CTX_KSB 80    /* 2*KS, KS = s+1 rounded up to even (row k = s+1 repeats k = s) */
+#define CTX_KSB 80    /* 2*KS, KS = s+2 rounded up to even (row k = s+1 repeats k = s) */
 #define CTX_NSUB 84   /* n = 4r^2 */
 #define CTX_X 92
 #define CTX_Y 96
@@ -300,9 +300,9 @@ _ncc_layout:
 	r7 = r7 + r5;
 	[p5 + CTX_CS2] = r7;
 	r5 = r4;
-	r5 += 2;
+	r5 += 3;
 	r5 >>= 1;
-	r5 = r5 << 2;        /* KSB = 2 * (s+1 rounded up to even) */
+	r5 = r5 << 2;        /* KSB = 2 * KS, KS = s+2 rounded up to even */
 	[p5 + CTX_KSB] = r5;
 	r6 = r2;
 	r6 += 1;
@@ -617,16 +617,24 @@ _ncc_pass1:
 	r7 = [p5 + CTX_NSUB];
 	r0 = [p5 + CTX_HEROW];
 	m0 = r0;
-	r0 = [p5 + CTX_KSB];
-	m1 = r0;
-	p3 = r0;
+	r1 = [p5 + CTX_S];
+	p4 = r1;             /* s steps */
+	r1 = r1 << 1;
+	r1 += 1;
+	r1 *= r0;
+	r1 += -4;
+	m2 = r1;             /* I0 back from row 2s+1 to the next column pair's row 0 */
 	r0 = [p5 + CTX_S];
-	p4 = r0;             /* s steps */
+	r0 += 2;
+	r0 = r0 << 1;        /* 2*(s+2) bytes written a column */
+	r1 = [p5 + CTX_KSB];
+	r1 = r1 << 1;
+	r1 = r1 - r0;
+	m1 = r1;             /* from the end of what was written to column 2m+2 */
+	p3 = r1;
 	r0 = [p5 + CTX_R];
 	r0 = r0 << 1;
-	[p5 + CTX_T1] = r0;  /* 2r rows */
-	r0 = [p5 + CTX_HE];
-	[p5 + CTX_T0] = r0;
+	p0 = r0;             /* 2r rows */
 	p1 = [p5 + CTX_CS2];
 	p2 = [p5 + CTX_NQ2];
 	r0 = p1;
@@ -636,22 +644,18 @@ _ncc_pass1:
 	r0 = p2;
 	r0 = r0 + r1;
 	i3 = r0;
+	r0 = [p5 + CTX_HE];
+	i0 = r0;
 	r0 = [p5 + CTX_L];
 	r0 += 1;
 	r0 >>= 1;
 	lc1 = r0;            /* (L+1)/2 column pairs */
 	lsetup (.Lp1_c0, .Lp1_c1) lc1;
 .Lp1_c0:
-	r0 = [p5 + CTX_T0];
-	i0 = r0;
-	i1 = r0;
-	r0 += 4;
-	[p5 + CTX_T0] = r0;
+	i1 = i0;
 	r6 = 0;
 	a1 = a0 = 0 || r1 = [i1 ++ m0] || nop;
-	r0 = [p5 + CTX_T1];
-	lc0 = r0;
-	lsetup (.Lp1_i0, .Lp1_i1) lc0;
+	lsetup (.Lp1_i0, .Lp1_i1) lc0 = p0;
 .Lp1_i0:
 	r6 = r6 +|+ r1;
 	r3.h = r1.h * r7.l, r3.l = r1.l * r7.l (is);
@@ -669,20 +673,16 @@ _ncc_pass1:
 	r6 = r6 +|+ r5;
 .Lp1_s1:
 	r2.h = (a1 += r3.h * r4.h), r2.l = (a0 += r3.l * r4.l) (t);
-	/* row k = s; with s even also k = s+1 repeating it (KS = s+2) */
+	/* row k = s, and k = s+1 repeating it (read when s is even), then the next column pair */
+	w[p1++] = r6;
+	i0 -= m2;
+	w[i2++] = r6.h;
+	w[p2++] = r2;
+	w[i3++] = r2.h;
 	w[p1++] = r6;
 	w[i2++] = r6.h;
 	w[p2++] = r2;
 	w[i3++] = r2.h;
-	r0 = [p5 + CTX_S];
-	cc = bittst(r0, 0);
-	if cc jump .Lp1_odd;
-	w[p1++] = r6;
-	w[i2++] = r6.h;
-	w[p2++] = r2;
-	w[i3++] = r2.h;
-.Lp1_odd:
-	/* each pointer is at the end of its column: skip the other lane's */
 	p1 = p1 + p3;
 	p2 = p2 + p3;
 	i2 += m1;
@@ -712,7 +712,7 @@ _ncc_pass2:
 	[p5 + CTX_T3] = r1;  /* s+1 sub-windows a row */
 	r0 += 2;
 	r0 >>= 1;
-	lc1 = r0;            /* pairs of rows */
+	lc1 = r0;            /* pairs of rows (2j, 2j+1); with s even the last is (s, s+1 = s) */
 	r0 = [p5 + CTX_CS2];
 	[p5 + CTX_T0] = r0;
 	r0 = [p5 + CTX_NQ2];
