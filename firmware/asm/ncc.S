@@ -701,48 +701,42 @@ _ncc_pass2:
 	r0 = [p5 + CTX_KSB];
 	m0 = r0;
 	p4 = r0;
+	r1 = [p5 + CTX_S];
+	r1 += 1;
+	[p5 + CTX_T3] = r1;  /* s+1 sub-windows a row */
+	r1 = r1 << 1;
+	r1 *= r0;
+	r1 += -4;
+	m1 = r1;             /* from column 2s+2 back to column 0 of the next pair of rows */
+	p2 = r1;
 	r7.l = 0x7fff;
 	r7.h = 0x7fff;
 	r0 = [p5 + CTX_R];
 	r0 = r0 << 1;
-	[p5 + CTX_T1] = r0;  /* 2r columns */
+	p3 = r0;             /* 2r columns */
 	r0 = [p5 + CTX_S];
-	r1 = r0;
-	r1 += 1;
-	[p5 + CTX_T3] = r1;  /* s+1 sub-windows a row */
 	r0 += 2;
 	r0 >>= 1;
 	lc1 = r0;            /* pairs of rows (2j, 2j+1); with s even the last is (s, s+1 = s) */
 	r0 = [p5 + CTX_CS2];
-	[p5 + CTX_T0] = r0;
-	r0 = [p5 + CTX_NQ2];
-	[p5 + CTX_T2] = r0;
+	i0 = r0;
+	p0 = [p5 + CTX_NQ2];
 	lsetup (.Lp2_0, .Lp2_1) lc1;
 .Lp2_0:
-	r0 = [p5 + CTX_T0];
-	i0 = r0;
-	i1 = r0;
-	r0 += 4;
-	[p5 + CTX_T0] = r0;
-	r0 = [p5 + CTX_T2];
-	p0 = r0;
-	p1 = r0;
-	r0 += 4;
-	[p5 + CTX_T2] = r0;
+	i1 = i0;
+	p1 = p0;
 	r4 = 0;
 	r5 = 0;
-	r0 = [p5 + CTX_T1];
-	lc0 = r0;
 	mnop || r1 = [p1 ++ p4] || r0 = [i1 ++ m0];
-	lsetup (.Lp2_i0, .Lp2_i1) lc0;
+	lsetup (.Lp2_i0, .Lp2_i1) lc0 = p3;
 .Lp2_i0:
 	r4 = r4 +|+ r0 || r0 = [i1 ++ m0] || nop;
 .Lp2_i1:
 	r5 = r5 +|+ r1 || r1 = [p1 ++ p4] || nop;
 	i1 -= m0;            /* back to column 2r, the first to enter */
 	p1 -= p4;
-	r0 = [p5 + CTX_T3];
-	lc0 = r0;
+	r6 = [p5 + CTX_T3];
+	lc0 = r6;
 	lsetup (.Lp2_s0, .Lp2_s1) lc0;
 .Lp2_s0:
 	r3.h = r4.h * r4.h, r3.l = r4.l * r4.l || r0 = [i1 ++ m0] || r1 = [p1 ++ p4];
@@ -757,8 +751,9 @@ _ncc_pass2:
 	r1 = r1 -|- r2;
 .Lp2_s1:
 	r5 = r5 +|+ r1;
+	i0 -= m1;
 .Lp2_1:
-	nop;
+	p0 -= p2;
 	r0 = r7.l (x);
 	r1 = r7 >>> 16;
 	r0 = min(r0, r1);
@@ -1409,7 +1404,10 @@ _ncc_num:
 _ncc_select:
 	[--sp] = rets;
 	r0 = [p5 + CTX_VMIN];
+	r0 >>= 15;           /* vmin = m * 2^15: isqrt(vmin) >= 181 * isqrt(m) */
 	call _ncc_isqrt;
+	r1 = 181;
+	r0 *= r1;
 	[p5 + CTX_QMIN] = r0;
 	/* the seed */
 	r4 = [p5 + CTX_S];
