@@ -249,6 +249,24 @@ void check(Checker &ck) {
       place(c, rng);
       ck.add(std::move(c));
     }
+    // Many points in one call, legal ones mixed with border ones and repeats: the assembly copies
+    // the next legal point's search area during the current one's MACs (r = 5, 5 <= s <= 10).
+    for (int s : {5, 8, 10}) {
+      Frames fr;
+      fr.w = rng.uniform(70, 160);
+      fr.h = rng.uniform(50, 120);
+      fr.stride = pick_stride(fr.w, rng);
+      const Pattern p = rng.uniform(0, 1) ? Pattern::Real : Pattern::Noise;
+      fr.f1 = make_plane(p, fr.w, fr.h, fr.stride, rng, real);
+      fr.f2 = moved(fr, rng.uniform(-3, 3), rng.uniform(-3, 3), 4, rng);
+      auto pts = pick_points(fr.w, fr.h, 5, s, s == 10 ? 10 : 16, rng);
+      char name[160];
+      std::snprintf(name, sizeof name, "%dx%d %s %s, %zu points", fr.w, fr.h, rs_name(5, s).c_str(),
+                    pattern_name(p), pts.size());
+      CheckCall c = match_call(fr, pts, 5, s, name);
+      place(c, rng);
+      ck.add(std::move(c));
+    }
     // Parameters out of range, and no points at all.
     for (auto rs : {std::pair{0, 4}, {BVB_NCC_MAX_RADIUS + 1, 4}, {3, 0}, {3, BVB_NCC_MAX_SEARCH + 1}, {-1, -1}, {3, 4}}) {
       Frames fr;
