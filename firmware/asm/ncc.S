@@ -90,7 +90,8 @@
 #define CTX_RECIP 264 /* ceil(2^16 / (2s+1)) */
 #define CTX_NCH 268   /* chunks of the copy program that are real */
 #define CTX_DUMMY 272 /* 36 bytes: where the program's idle chunks write */
-#define CTX_SIZE 320
+#define CTX_SEGB 320  /* the selection sweep's pairs before the seed's column pair */
+#define CTX_SIZE 336
 #define CHUNK 18      /* pixels per chunk of the copy program */
 
 #define MAX_RADIUS 5
@@ -352,6 +353,7 @@ _ncc_layout:
 	r6 += 2;
 	r6 = r6 << 2;
 	r7 = r7 + r6;        /* end of the numerators */
+
 	/* ceil(2^16 / (2s+1)) */
 	r0 = r4 << 1;
 	r0 += 1;
@@ -783,9 +785,9 @@ _ncc_pass2:
 .Lp2_s0:
 	r3.h = r4.h * r4.h, r3.l = r4.l * r4.l || r0 = [i1 ++ m0] || r1.l = w[p0 ++ p4];
 	r3 = r5 -|- r3 || r2 = [i1 ++ m0] || r1.h = w[p1 ++ p4];
-	r7 = min(r7, r3) (v) || r3 = [i0 ++ m0] || r6.l = w[p0 ++ p4];
-	r0 = r0 +|+ r2 || r2 = [i0 ++ m0] || r6.h = w[p1 ++ p4];
-	r0 = r0 -|- r3 || r3.l = w[p2 ++ p4] || nop;
+	r7 = min(r7, r3) (v) || r6.l = w[p0 ++ p4] || nop;
+	r0 = r0 +|+ r2 || r3 = [i0 ++ m0] || r6.h = w[p1 ++ p4];
+	r0 = r0 -|- r3 || r2 = [i0 ++ m0] || r3.l = w[p2 ++ p4];
 	r0 = r0 -|- r2 || r3.h = w[p3 ++ p4] || nop;
 	r4 = r4 +|+ r0 || r2.l = w[p2 ++ p4] || nop;
 	r1 = r1 +|+ r6 || r2.h = w[p3 ++ p4] || nop;
@@ -1085,9 +1087,8 @@ _ncc_macpass:
 5:	jump.l _ncc_mac5;
 
 /* ------------------------------------------------------------------------------------------- */
-/* Helpers. _ncc_mul64: R1:R0 = R0 * R1 (unsigned 32 x 32 -> 64); clobbers R2-R5. */
-	.align 4
-_ncc_mul64:
+/* Helpers. MUL64: R1:R0 = R0 * R1 (unsigned 32 x 32 -> 64); clobbers R2-R5. */
+	.macro MUL64
 	r3 = r0.h * r1.h, r2 = r0.l * r1.l (fu);
 	r5 = r0.h * r1.l, r4 = r0.l * r1.h (fu);
 	r4 = r4 + r5 (ns);
@@ -1102,6 +1103,11 @@ _ncc_mul64:
 	cc = ac0;
 	r5 = cc;
 	r1 = r3 + r5;
+	.endm
+
+	.align 4
+_ncc_mul64:
+	MUL64
 	rts;
 
 /* _ncc_isqrt: R0 = floor(sqrt(R0)), bit by bit from the top: y + b is kept when (y + b)^2 <= x.
@@ -1186,7 +1192,7 @@ _ncc_compare:
 	[p5 + CTX_T1] = r3;  /* v_b */
 	[p5 + CTX_T2] = r2;  /* |num_b| */
 	r1 = r0;
-	call _ncc_mul64;     /* num_a^2 */
+	MUL64                /* num_a^2 */
 	r3 = [p5 + CTX_T1];
 	call .Lc_times;      /* (R2, R1, R0) = R1:R0 * R3 */
 	[p5 + CTX_T6] = r0;
@@ -1194,7 +1200,7 @@ _ncc_compare:
 	[p5 + CTX_T8] = r2;
 	r0 = [p5 + CTX_T2];
 	r1 = r0;
-	call _ncc_mul64;
+	MUL64
 	r3 = [p5 + CTX_T0];
 	call .Lc_times;
 	r3 = [p5 + CTX_T8];
@@ -1235,12 +1241,12 @@ _ncc_compare:
 	[p5 + CTX_T3] = r1;
 	[p5 + CTX_T4] = r3;
 	r1 = r3;
-	call _ncc_mul64;     /* lo * v */
+	MUL64                /* lo * v */
 	[p5 + CTX_T9] = r0;
 	[p5 + CTX_T10] = r1;
 	r0 = [p5 + CTX_T3];
 	r1 = [p5 + CTX_T4];
-	call _ncc_mul64;     /* hi * v */
+	MUL64                /* hi * v */
 	r2 = [p5 + CTX_T10];
 	r0 = r0 + r2 (ns);
 	cc = ac0;
@@ -1519,19 +1525,31 @@ _ncc_select:
 	r5 = r5 + r0;
 	[p5 + CTX_BKEY] = r5;
 	call _ncc_tau;
-	/* every pair of the column pairs, in one loop: the flagged pair is two behind the loads */
+	/* every pair of the column pairs, in one loop per segment: first from the seed's column
+	 * pair to the last, then from the first to the seed's (a good best early keeps tau high);
+	 * the flagged pair is two behind the loads */
 	r0 = 8;
 	m0 = r0;
 	r0 = [p5 + CTX_NP];
 	[p5 + CTX_T15] = r0;
+	r2 = [p5 + CTX_S];
+	r1 = r2 << 1;
+	r1 += 1;             /* 2s+1 */
+	r4 = [p5 + CTX_BE];
+	r4 >>= 1;
+	r5 = r2;
+	r5 += -1;
+	r4 = min(r4, r5);
+	r4 *= r1;            /* the seed's column pair, its first pair */
+	[p5 + CTX_SEGB] = r4;
+	r1 *= r2;
+	r1 = r1 - r4;
+	p1 = r1;             /* pairs from there to the end */
+	r4 = r4 << 3;
+	r0 = r0 + r4;
 	i0 = r0;
 	r0 += 4;
 	i1 = r0;
-	r0 = [p5 + CTX_S];
-	r1 = r0 << 1;
-	r1 += 1;
-	r1 *= r0;
-	p1 = r1;             /* s*(2s+1) pairs */
 	r3 = [p5 + CTX_TAU];
 	mnop || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
 	cc = r3 < r3;
@@ -1541,6 +1559,27 @@ _ncc_select:
 .Ls_back:
 	r2 = max(r0, r1) || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
 .Ls_p1:
+	cc = r3 <= r2;
+	if !cc jump .Ls_segb (bp);
+	call .Ls_pair;
+.Ls_segb:
+	r1 = [p5 + CTX_SEGB];
+	cc = r1 == 0;
+	if cc jump .Ls_singles;
+	p1 = r1;             /* the pairs before the seed's column pair */
+	r0 = [p5 + CTX_NP];
+	i0 = r0;
+	r0 += 4;
+	i1 = r0;
+	r3 = [p5 + CTX_TAU];
+	mnop || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
+	cc = r3 < r3;
+	lsetup (.Ls_r0, .Ls_r1) lc0 = p1;
+.Ls_r0:
+	if cc jump .Ls_slowr;
+.Ls_backr:
+	r2 = max(r0, r1) || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
+.Ls_r1:
 	cc = r3 <= r2;
 	if !cc jump .Ls_singles (bp);
 	call .Ls_pair;
@@ -1574,18 +1613,15 @@ _ncc_select:
 .Ls_slow1:
 	call .Ls_single;
 	jump .Ls_back1;
+.Ls_slowr:
+	call .Ls_pair;
+	jump .Ls_backr;
 /* The flagged pair's index is (I0 - base) / 8 - 2; for the column pairs it is p*(2s+1) + d.
  * Keeps R0, R1, I0, I1, M0 and the sweep's loop registers; reloads R3 = tau. */
 .Ls_pair:
 	[--sp] = rets;
 	[--sp] = r0;
 	[--sp] = r1;
-	[--sp] = lc1;
-	[--sp] = lt1;
-	[--sp] = lb1;
-	[--sp] = lc0;
-	[--sp] = lt0;
-	[--sp] = lb0;
 	r0 = i0;
 	r5 = [p5 + CTX_T15];
 	r0 = r0 - r5;
@@ -1623,12 +1659,6 @@ _ncc_select:
 	[--sp] = rets;
 	[--sp] = r0;
 	[--sp] = r1;
-	[--sp] = lc1;
-	[--sp] = lt1;
-	[--sp] = lb1;
-	[--sp] = lc0;
-	[--sp] = lt0;
-	[--sp] = lb0;
 	r4 = i0;
 	r5 = [p5 + CTX_T15];
 	r4 = r4 - r5;
@@ -1655,12 +1685,6 @@ _ncc_select:
 	r2 = [p5 + CTX_T18];
 	call _ncc_consider;
 .Ls_ret:
-	lb0 = [sp++];
-	lt0 = [sp++];
-	lc0 = [sp++];
-	lb1 = [sp++];
-	lt1 = [sp++];
-	lc1 = [sp++];
 	r1 = [sp++];
 	r0 = [sp++];
 	r3 = [p5 + CTX_TAU];
@@ -1869,3 +1893,4 @@ _bvb_ncc_scoremap_asm:
 	rets = [sp++];
 	rts;
 	.size _bvb_ncc_scoremap_asm, . - _bvb_ncc_scoremap_asm
+

@@ -69,7 +69,7 @@
 #define BVB_NCC_L(r, s) (2 * (s) + 2 * (r) + 1)
 #define BVB_NCC_PIPELINED(r, s) ((r) == 5 && (s) >= 5 && (s) <= 10)
 #define BVB_NCC_SCRATCH_SIZE(r, s)                                                                 \
-  (320 + 4 * BVB_NCC_L(r, s) * (BVB_NCC_L(r, s) + 1) + 4                                          \
+  (336 + 4 * BVB_NCC_L(r, s) * (BVB_NCC_L(r, s) + 1) + 4                                          \
    + 4 * (((2 * (r) + 1) * (2 * (r) + 1) + 1) / 2) + 4 * (2 * (r) + 1) * ((r) + 1)                \
    + 12 * (BVB_NCC_L(r, s) + 1) * (((s) + 3) / 2) + 4 * (2 * (s) + 2) * (2 * (s) + 2)               \
    + (BVB_NCC_PIPELINED(r, s)                                                                      \
