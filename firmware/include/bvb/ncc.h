@@ -45,7 +45,7 @@
  * Points that are not BVB_NCC_OK report dx = dy = score = 0. A flat template (vt = 0) reports
  * BVB_NCC_FLAT (every score would be 0).
  * scratch: BVB_NCC_SCRATCH_SIZE(r, s) bytes, 4-byte aligned (working buffers of the assembly;
- * the C reference does not use it). For r = 5, s = 8 it is about 9 KB: L1 data bank A in the
+ * the C reference does not use it). For r = 5, s = 8 it is 11,376 bytes: L1 data bank A in the
  * robot's firmware, frames in SDRAM. */
 #ifndef BVB_NCC_H
 #define BVB_NCC_H
