@@ -19,10 +19,10 @@
  *   sign(num_a)*num_a^2 * v_b  >  sign(num_b)*num_b^2 * v_a,
  * compared as signs first and then as 96-bit unsigned products (num^2 < 2^56, v < 2^28); vt is
  * common to both sides and cancels. A window of zero variance (v = 0) has num = 0 and scores
- * exactly 0. Equal scores are ties, broken by the offset: the smallest
- * |dx|+|dy| wins, then the smallest dy, then the smallest dx (so a flat search area, or a
- * periodic pattern, gives the match nearest to no motion). The result is the unique maximum of
- * this total order, whatever order an implementation visits the candidates in.
+ * exactly 0. Equal scores are ties, broken by the offset: the smallest |dx|+|dy| wins, then the
+ * smallest dy, then the smallest dx (so a flat search area, or a periodic pattern, gives the
+ * match nearest to no motion). The result is the unique maximum of this total order, whatever
+ * order an implementation visits the candidates in.
  *
  * Reported score: Q15 in an int16 (32767 ~ 1.0), computed from the winner's num and v as follows
  * (bit for bit in every implementation):
