@@ -165,3 +165,348 @@ _bvb_hs_iterate_asm:
 	(r7:4, p5:3) = [sp++];
 	rts;
 	.size _bvb_hs_iterate_asm, . - _bvb_hs_iterate_asm
+
+/* ---------------------------------------------------------------------------------------------
+ * bvb_hs_prepare_asm(i1, i2, width, height, stride, alpha2_q4, coef)
+ * --------------------------------------------------------------------------------------------- */
+
+/* Shift counts by SIGNBITS(D), D in [2^10, 2^22) so SIGNBITS in 9..20: k = (sb - 1) >> 1 with
+ * D 4^k in [2^28, 2^30); word 1 = (k - 5 : k), word 2 = 2k - 20 (the right shift giving the
+ * table index D 4^k >> 20). */
+	.section .l1.data.a, "aw"
+	.align 4
+.Lhs_counts:
+	.int 0xffff0004, 0xffff0004, 0x00000005, 0x00000005, 0x00010006, 0x00010006
+	.int 0x00020007, 0x00020007, 0x00030008, 0x00030008, 0x00040009, 0x00040009
+	.int -12, -12, -10, -10, -8, -8, -6, -6, -4, -4, -2, -2
+
+/* Stack frame of bvb_hs_prepare_asm (FP-relative locals). */
+#define HS_PITCH   -4   /* coefficient row pitch, bytes */
+#define HS_W4      -8   /* 4 * width: offset of the gt row */
+#define HS_NGF     -12  /* full groups of 4 columns */
+#define HS_TAIL    -16  /* width - 4 * groups */
+#define HS_NPAIR   -20  /* full pairs of phase 2: (width - 1) >> 1 */
+#define HS_ODD     -24  /* width & 1 */
+#define HS_FRAME   24
+
+/* Pass A: per-row frame sums and differences of one row of both frames, r = I2 + I1 and
+ * n = I2 - I1 per column, into the row's coefficient area: per group of 4 columns the words
+ * (r1:r0) (r3:r2) (n1:n0) (n3:n2), then one word (n:r) per remaining column.
+ * In: R0 = frame-1 row, R1 = frame-2 row, P0 = destination. */
+.macro HS_PASS_A tag
+	i1 = r0;                        /* BYTEOP alignment: operand 2 = frame 1 */
+	i0 = r1;                        /* operand 1 = frame 2 */
+	r2 = -4;
+	r3 = r0 & r2;
+	i2 = r3;                        /* aligned word streams */
+	r3 = r1 & r2;
+	i3 = r3;
+	/* Second word of a group only when the row is misaligned: never read past the row. */
+	r2 = 3;
+	r3 = r0 & r2;
+	r3 += 3;
+	r2 = 4;
+	r3 = r3 & r2;
+	m0 = r3;
+	r3 = r2 - r3;
+	m1 = r3;
+	r2 = 3;
+	r3 = r1 & r2;
+	r3 += 3;
+	r2 = 4;
+	r3 = r3 & r2;
+	m2 = r3;
+	r3 = r2 - r3;
+	m3 = r3;
+	p3 = [fp + HS_NGF];
+	r2 = p3;
+	r2 = r2 << 2;
+	r0 = r0 + r2;
+	r1 = r1 + r2;
+	p1 = r0;                        /* byte pointers for the remaining columns */
+	p2 = r1;
+	cc = p3 == 0;
+	if cc jump .Lpa_tail\tag;
+	p3 += -1;
+	mnop || r0 = [i3 ++ m2] || r2 = [i2 ++ m0];
+	mnop || r1 = [i3 ++ m3] || r3 = [i2 ++ m1];
+	cc = p3 == 0;
+	if cc jump .Lpa_last\tag;
+	lsetup (.Lpa_grp\tag, .Lpa_grp_end\tag) lc0 = p3;
+.Lpa_grp\tag:
+	(r5, r4) = byteop16p (r1:0, r3:2);
+	(r7, r6) = byteop16m (r1:0, r3:2) || [p0++] = r4 || r0 = [i3 ++ m2];
+	mnop || [p0++] = r5 || r1 = [i3 ++ m3];
+	mnop || [p0++] = r6 || r2 = [i2 ++ m0];
+.Lpa_grp_end\tag:
+	mnop || [p0++] = r7 || r3 = [i2 ++ m1];
+.Lpa_last\tag:
+	(r5, r4) = byteop16p (r1:0, r3:2);
+	(r7, r6) = byteop16m (r1:0, r3:2) || [p0++] = r4;
+	[p0++] = r5;
+	[p0++] = r6;
+	[p0++] = r7;
+.Lpa_tail\tag:
+	p3 = [fp + HS_TAIL];
+	cc = p3 == 0;
+	if cc jump .Lpa_done\tag;
+	lsetup (.Lpa_col\tag, .Lpa_col_end\tag) lc0 = p3;
+.Lpa_col\tag:
+	r0 = b[p1++] (z);
+	r1 = b[p2++] (z);
+	r2 = r1 + r0, r3 = r1 - r0;
+	r2 = pack (r3.l, r2.l);
+.Lpa_col_end\tag:
+	[p0++] = r2;
+.Lpa_done\tag:
+.endm
+
+/* Pass B: column sums s, vertical differences p and time differences q of the row pair from
+ * the two rows' pass-A data (I2: this row, I3: the row below, or this row again on the last):
+ * C = (p:s) per column into the row's first 4w bytes (in place), q into its gt row (P1). */
+.macro HS_PASS_B tag
+	p3 = [fp + HS_NGF];
+	cc = p3 == 0;
+	if cc jump .Lpb_tail\tag;
+	p3 += -1;
+	mnop || r0 = [i2++] || r2 = [i3++];
+	r2 = r2 +|+ r0, r0 = r2 -|- r0 || r1 = [i2++] || r3 = [i3++];
+	cc = p3 == 0;
+	if cc jump .Lpb_last\tag;
+	lsetup (.Lpb_grp\tag, .Lpb_grp_end\tag) lc0 = p3;
+.Lpb_grp\tag:
+	r3 = r3 +|+ r1, r1 = r3 -|- r1 || r4 = [i2++] || r6 = [i3++];
+	r6 = r6 +|+ r4 || r5 = [i2++] || r7 = [i3++];
+	r7 = r7 +|+ r5 || [p1++] = r6;
+	r4 = pack (r0.l, r2.l) || [p1++] = r7;
+	r5 = pack (r0.h, r2.h) || [p0++] = r4 || r0 = [i2++];
+	r6 = pack (r1.l, r3.l) || [p0++] = r5 || r2 = [i3++];
+	r7 = pack (r1.h, r3.h) || [p0++] = r6 || r1 = [i2++];
+.Lpb_grp_end\tag:
+	r2 = r2 +|+ r0, r0 = r2 -|- r0 || [p0++] = r7 || r3 = [i3++];
+.Lpb_last\tag:
+	r3 = r3 +|+ r1, r1 = r3 -|- r1 || r4 = [i2++] || r6 = [i3++];
+	r6 = r6 +|+ r4 || r5 = [i2++] || r7 = [i3++];
+	r7 = r7 +|+ r5 || [p1++] = r6;
+	r4 = pack (r0.l, r2.l) || [p1++] = r7;
+	r5 = pack (r0.h, r2.h) || [p0++] = r4;
+	r6 = pack (r1.l, r3.l) || [p0++] = r5;
+	r7 = pack (r1.h, r3.h) || [p0++] = r6;
+	[p0++] = r7;
+.Lpb_tail\tag:
+	p3 = [fp + HS_TAIL];
+	cc = p3 == 0;
+	if cc jump .Lpb_done\tag;
+	lsetup (.Lpb_col\tag, .Lpb_col_end\tag) lc0 = p3;
+.Lpb_col\tag:
+	mnop || r0 = [i2++] || r1 = [i3++];
+	r2 = r1 +|+ r0, r3 = r1 -|- r0;
+	r3 = pack (r3.l, r2.l);
+	r2 = r2 >> 16 || [p0++] = r3;
+.Lpb_col_end\tag:
+	w[p1++] = r2;
+.Lpb_done\tag:
+.endm
+
+/* Phase 2, steps 2-28 of a pixel pair (A = x, B = x + 1); step 1 (GA = C(x+1) +|- C(x)) is
+ * done before. On entry R0 = GA, R4 = C(x+1), R1 = C(x+2), R6 = (q(x+1):q(x)),
+ * R5 = (q(x+2):q(x+1)); R7.H = 0. With ahead = 1 the loads for the next pair ride along. */
+.macro HS_PAIR ahead
+	r1 = r1 +|- r4;                                 /* GB = (gy:gx) of B */
+	r2 = r6 +|+ r5;                                 /* (gtB:gtA) */
+	a0 = r0.l * r0.l (is);
+	a0 += r0.h * r0.h (is);
+	r6 = (a0 += a1);                                /* D of A */
+	r7.l = signbits r6;
+	p0 = r7;
+	p0 = p4 + (p0 << 2);
+	a0 = r1.l * r1.l (is) || r4 = [p0 + 48];        /* c */
+	a0 += r1.h * r1.h (is) || r5 = [p0];            /* k */
+	r6 = lshift r6 by r4.l || r4 = w[p0 + 2] (x);   /* table index; t */
+	p1 = r6;
+	p1 = p5 + (p1 << 1);
+	r6 = (a0 += a1) || r3.l = w[p1];                /* D of B; S of A */
+	r7.l = signbits r6;
+	p0 = r7;
+	p0 = p4 + (p0 << 2);
+	r0 = ashift r0 by r5.l (v) || r5 = [p0 + 48];
+	r2.l = ashift r2.l by r4.l || r4 = [p0];
+	r6 = lshift r6 by r5.l || r5 = w[p0 + 2] (x);
+	p1 = r6;
+	p1 = p5 + (p1 << 1);
+.if \ahead
+	r0.h = r0.h * r3.l, r0.l = r0.l * r3.l (s2rnd) || r3.h = w[p1] || r6 = [i1++];
+	r1 = ashift r1 by r4.l (v) || r0 = [i0++] || [i2++] = r0;
+	r2.h = ashift r2.h by r5.l || r4 = [i0++] || r5.h = w[i1--];
+	r1.h = r1.h * r3.h, r1.l = r1.l * r3.h (s2rnd) || r5.l = w[i1++];
+	r2.h = r2.h * r3.h, r2.l = r2.l * r3.l (s2rnd) || r1 = [i0] || [i2++] = r1;
+.else
+	r0.h = r0.h * r3.l, r0.l = r0.l * r3.l (s2rnd) || r3.h = w[p1];
+	r1 = ashift r1 by r4.l (v) || [i2++] = r0;
+	r2.h = ashift r2.h by r5.l;
+	r1.h = r1.h * r3.h, r1.l = r1.l * r3.h (s2rnd);
+	r2.h = r2.h * r3.h, r2.l = r2.l * r3.l (s2rnd) || [i2++] = r1;
+.endif
+.endm
+
+/* Phase 2 of one row: from C and q (pass B) to the coefficients, in place. In: P3 = row. */
+.macro HS_PHASE2 tag
+	r0 = p3;
+	i0 = r0;                        /* C loads */
+	i2 = r0;                        /* (gy':gx') stores */
+	r1 = [fp + HS_W4];
+	r0 = r0 + r1;
+	i1 = r0;                        /* q loads */
+	i3 = r0;                        /* gt' stores */
+	r7 = 0;
+	p3 = [fp + HS_NPAIR];
+	cc = p3 == 0;
+	if cc jump .Lp2_even\tag;
+	p3 += -1;
+	mnop || r0 = [i0++] || r6 = [i1++];
+	mnop || r4 = [i0++] || r5.h = w[i1--];
+	r0 = r4 +|- r0 || r1 = [i0] || r5.l = w[i1++];
+	cc = p3 == 0;
+	if cc jump .Lp2_last\tag;
+	lsetup (.Lp2_pair\tag, .Lp2_pair_end\tag) lc0 = p3;
+.Lp2_pair\tag:
+	HS_PAIR 1
+.Lp2_pair_end\tag:
+	r0 = r4 +|- r0 || [i3++] = r2;
+.Lp2_last\tag:
+	HS_PAIR 0
+	r3 = [fp + HS_ODD];
+	cc = r3 == 0;
+	[i3++] = r2;
+	if cc jump .Lp2_even\tag;
+	/* Odd width: pixel width-1 alone, its right neighbour itself; the pad after gt' is 0. */
+	r0 = [i0];
+	r2 = 0;
+	r2.l = w[i1];
+	r0 = r0 +|- r0;
+	r2 = r2 +|+ r2;
+	a0 = r0.l * r0.l (is);
+	a0 += r0.h * r0.h (is);
+	r6 = (a0 += a1);
+	r7.l = signbits r6;
+	p0 = r7;
+	p0 = p4 + (p0 << 2);
+	r4 = [p0 + 48];
+	r6 = lshift r6 by r4.l || r5 = [p0];
+	p1 = r6;
+	p1 = p5 + (p1 << 1);
+	r0 = ashift r0 by r5.l (v) || r4 = w[p0 + 2] (x);
+	r2.l = ashift r2.l by r4.l || r3.l = w[p1];
+	r0.h = r0.h * r3.l, r0.l = r0.l * r3.l (s2rnd);
+	r2.l = r2.l * r3.l (s2rnd) || [i2++] = r0;
+	[i3] = r2;
+	jump .Lp2_done\tag;
+.Lp2_even\tag:
+	/* Even width: the pair width-2, width-1 with C(width) = C(width-1), q(width) = q(width-1). */
+	r0 = [i0++];
+	r4 = [i0];
+	mnop || r1 = [i0] || r6 = [i1];
+	r0 = r4 +|- r0;
+	r5 = pack (r6.h, r6.h);
+	HS_PAIR 0
+	[i3] = r2;
+.Lp2_done\tag:
+.endm
+
+	.section .l1.text, "ax"
+	.align 4
+	.global _bvb_hs_prepare_asm
+	.type _bvb_hs_prepare_asm, STT_FUNC
+_bvb_hs_prepare_asm:
+	[--sp] = (r7:4, p5:3);
+	link HS_FRAME;
+	/* Arguments 4-7 at FP + 8 (RETS, FP) + 28 (saves) + 12. */
+	b1 = r0;                        /* frame 1 row */
+	b2 = r1;                        /* frame 2 row */
+	r3 = r2 << 2;
+	[fp + HS_W4] = r3;
+	r4 = r2 << 1;
+	r4 = r4 + r3;
+	r5 = 1;
+	r5 = r5 & r2;
+	[fp + HS_ODD] = r5;
+	r6 = r5 << 1;
+	r4 = r4 + r6;
+	[fp + HS_PITCH] = r4;
+	r3 = r2 >> 2;
+	[fp + HS_NGF] = r3;
+	r4 = 3;
+	r4 = r4 & r2;
+	[fp + HS_TAIL] = r4;
+	r3 = r2;
+	r3 += -1;
+	r3 >>= 1;
+	[fp + HS_NPAIR] = r3;
+	r3 = [fp + 52];
+	b3 = r3;                        /* stride */
+	r3 = [fp + 56];                 /* alpha2_q4, clamped to 1024..1048576 */
+	r4 = 1024;
+	r3 = max (r3, r4);
+	r4.l = 0;
+	r4.h = 0x10;
+	r3 = min (r3, r4);
+	a1 = r3;
+	p3 = [fp + 60];
+	b0 = p3;                        /* coefficient row */
+	p4.l = .Lhs_counts - 36;
+	p4.h = .Lhs_counts - 36;
+	p5.l = _bvb_hs_rsqrt_table - 512;
+	p5.h = _bvb_hs_rsqrt_table - 512;
+	p0 = p3;
+	HS_PASS_A 0
+	r0 = [fp + 48];                 /* height */
+	r0 += -1;
+	lc1 = r0;
+	lsetup (.Lpr_row, .Lpr_row_end) lc1;
+.Lpr_row:
+	r2 = b3;
+	r0 = b1;
+	r0 = r0 + r2;
+	b1 = r0;
+	r1 = b2;
+	r1 = r1 + r2;
+	b2 = r1;
+	r2 = b0;
+	r3 = [fp + HS_PITCH];
+	r2 = r2 + r3;
+	p0 = r2;
+	HS_PASS_A 1
+	p3 = b0;
+	r0 = p3;
+	i2 = r0;
+	r1 = [fp + HS_PITCH];
+	r1 = r1 + r0;
+	i3 = r1;
+	p0 = p3;
+	r1 = [fp + HS_W4];
+	r0 = r0 + r1;
+	p1 = r0;
+	HS_PASS_B 1
+	p3 = b0;
+	HS_PHASE2 1
+	r0 = b0;
+	r1 = [fp + HS_PITCH];
+	r0 = r0 + r1;
+.Lpr_row_end:
+	b0 = r0;
+	/* Last row: the row below is the row itself. */
+	p3 = b0;
+	r0 = p3;
+	i2 = r0;
+	i3 = r0;
+	p0 = p3;
+	r1 = [fp + HS_W4];
+	r0 = r0 + r1;
+	p1 = r0;
+	HS_PASS_B 2
+	p3 = b0;
+	HS_PHASE2 2
+	unlink;
+	(r7:4, p5:3) = [sp++];
+	rts;
+	.size _bvb_hs_prepare_asm, . - _bvb_hs_prepare_asm
