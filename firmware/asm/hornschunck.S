@@ -510,3 +510,120 @@ _bvb_hs_prepare_asm:
 	(r7:4, p5:3) = [sp++];
 	rts;
 	.size _bvb_hs_prepare_asm, . - _bvb_hs_prepare_asm
+
+/* ---------------------------------------------------------------------------------------------
+ * bvb_hornschunck_asm(i1, i2, width, height, stride, alpha2_q4, iterations, uv_out, out_stride,
+ *                     scratch): prepare, then the iterations ping-ponging between the scratch
+ * flow buffer and uv_out, starting in the one that makes the last iteration write uv_out.
+ * --------------------------------------------------------------------------------------------- */
+#define HS_OUT_STRIDE -4
+#define HS_CUR        -8
+#define HS_CUR_STRIDE -12
+#define HS_NEXT       -16
+#define HS_NEXT_STRIDE -20
+#define HS_I1         -24
+#define HS_I2         -28
+#define HS_DRV_FRAME  56             /* locals at FP-28..-1, outgoing arguments at SP + 12..27 */
+
+	.section .l1.text, "ax"
+	.align 4
+	.global _bvb_hornschunck_asm
+	.type _bvb_hornschunck_asm, STT_FUNC
+_bvb_hornschunck_asm:
+	[--sp] = (r7:4, p5:3);
+	link HS_DRV_FRAME;
+	/* Arguments 4-10 at FP + 48. */
+	[fp + HS_I1] = r0;
+	[fp + HS_I2] = r1;
+	r4 = r2;                         /* width */
+	r5 = [fp + 48];                  /* height */
+	r6 = [fp + 60];                  /* iterations */
+	p5 = [fp + 64];                  /* uv_out */
+	r0 = [fp + 68];
+	[fp + HS_OUT_STRIDE] = r0;
+	p3 = [fp + 72];                  /* coefficients at the start of scratch */
+	r7 = r4 << 2;                    /* the scratch flow buffer's stride */
+	/* tmp = scratch + BVB_HS_COEF_BYTES(width, height) */
+	r0 = r4 << 1;
+	r0 = r0 + r7;
+	r1 = 1;
+	r1 = r1 & r4;
+	r1 = r1 << 1;
+	r0 = r0 + r1;
+	r0 *= r5;
+	r1 = p3;
+	r0 = r0 + r1;
+	p4 = r0;
+	/* cur = iterations odd ? tmp : uv_out; next is the other one. */
+	r0 = p4;
+	r1 = r7;
+	r2 = p5;
+	r3 = [fp + HS_OUT_STRIDE];
+	cc = bittst (r6, 0);
+	if !cc r0 = r2;
+	if !cc r1 = r3;
+	[fp + HS_CUR] = r0;
+	[fp + HS_CUR_STRIDE] = r1;
+	r2 = p4;
+	r3 = r7;
+	p0 = p5;
+	if cc r2 = p0;
+	r0 = [fp + HS_OUT_STRIDE];
+	if cc r3 = r0;
+	[fp + HS_NEXT] = r2;
+	[fp + HS_NEXT_STRIDE] = r3;
+	/* Zero flow to start from: width words per row of cur. */
+	r0 = [fp + HS_CUR];
+	r1 = [fp + HS_CUR_STRIDE];
+	r2 = 0;
+	p1 = r4;
+	lc1 = r5;
+	lsetup (.Lhs_zrow, .Lhs_zrow_end) lc1;
+.Lhs_zrow:
+	p0 = r0;
+	lsetup (.Lhs_zpix, .Lhs_zpix) lc0 = p1;
+.Lhs_zpix:
+	[p0++] = r2;
+.Lhs_zrow_end:
+	r0 = r0 + r1;
+	/* prepare(i1, i2, width, height, stride, alpha2_q4, coef) */
+	r0 = [fp + 52];
+	[sp + 16] = r0;
+	r0 = [fp + 56];
+	[sp + 20] = r0;
+	[sp + 12] = r5;
+	[sp + 24] = p3;
+	r0 = [fp + HS_I1];
+	r1 = [fp + HS_I2];
+	r2 = r4;
+	call _bvb_hs_prepare_asm;
+	cc = r6 <= 0;
+	if cc jump .Lhs_done;
+.Lhs_iter:
+	/* iterate(coef, cur, cur_stride, next, next_stride, width, height), then swap. */
+	r0 = [fp + HS_NEXT];
+	[sp + 12] = r0;
+	r0 = [fp + HS_NEXT_STRIDE];
+	[sp + 16] = r0;
+	[sp + 20] = r4;
+	[sp + 24] = r5;
+	r0 = p3;
+	r1 = [fp + HS_CUR];
+	r2 = [fp + HS_CUR_STRIDE];
+	call _bvb_hs_iterate_asm;
+	r0 = [fp + HS_CUR];
+	r1 = [fp + HS_CUR_STRIDE];
+	r2 = [fp + HS_NEXT];
+	r3 = [fp + HS_NEXT_STRIDE];
+	[fp + HS_CUR] = r2;
+	[fp + HS_CUR_STRIDE] = r3;
+	[fp + HS_NEXT] = r0;
+	[fp + HS_NEXT_STRIDE] = r1;
+	r6 += -1;
+	cc = r6 == 0;
+	if !cc jump .Lhs_iter (bp);
+.Lhs_done:
+	unlink;
+	(r7:4, p5:3) = [sp++];
+	rts;
+	.size _bvb_hornschunck_asm, . - _bvb_hornschunck_asm
