@@ -192,7 +192,26 @@ _bvb_hs_iterate_asm:
 /* Pass A: per-row frame sums and differences of one row of both frames, r = I2 + I1 and
  * n = I2 - I1 per column, into the row's coefficient area: per group of 4 columns the words
  * (r1:r0) (r3:r2) (n1:n0) (n3:n2), then one word (n:r) per remaining column.
- * In: R0 = frame-1 row, R1 = frame-2 row, P0 = destination. */
+ * In: R0 = frame-1 row, R1 = frame-2 row, P0 = destination.
+ * BYTEOP16P/M take 4 bytes at offset I0 & 3 (frame 2) and I1 & 3 (frame 1) from two words of
+ * each frame, R1:0 and R3:2. Groups alternate: the word a group shares with the next stays, the
+ * other is replaced, and the next group reads the pair reversed (R). Words are read only up to
+ * the last one holding a pixel of the row: the group after the last one needs its second word
+ * only when the row is misaligned (M1, M3 = 4 - that word's offset). */
+.macro HS_PA_LOOP tag
+	lsetup (.Lpa_two\tag, .Lpa_two_end\tag) lc0 = p3;
+.Lpa_two\tag:
+	(r7, r6) = byteop16m (r1:0, r3:2) || [p0++] = r4 || r0 = [i3++];
+	mnop || [p0++] = r5 || r2 = [i2++];
+	[p0++] = r6;
+	(r5, r4) = byteop16p (r1:0, r3:2) (r) || [p0++] = r7;
+	(r7, r6) = byteop16m (r1:0, r3:2) (r) || [p0++] = r4 || r1 = [i3++];
+	mnop || [p0++] = r5 || r3 = [i2++];
+	[p0++] = r6;
+.Lpa_two_end\tag:
+	(r5, r4) = byteop16p (r1:0, r3:2) || [p0++] = r7;
+.endm
+
 .macro HS_PASS_A tag
 	i1 = r0;                        /* BYTEOP alignment: operand 2 = frame 1 */
 	i0 = r1;                        /* operand 1 = frame 2 */
@@ -201,7 +220,7 @@ _bvb_hs_iterate_asm:
 	i2 = r3;                        /* aligned word streams */
 	r3 = r1 & r2;
 	i3 = r3;
-	/* Second word of a group only when the row is misaligned: never read past the row. */
+	/* 4 if the row is misaligned (a group spans two words), else 0 */
 	r2 = 3;
 	r3 = r0 & r2;
 	r3 += 3;
@@ -220,29 +239,65 @@ _bvb_hs_iterate_asm:
 	m3 = r3;
 	p3 = [fp + HS_NGF];
 	r2 = p3;
-	r2 = r2 << 2;
-	r0 = r0 + r2;
-	r1 = r1 + r2;
+	r3 = r2 << 2;
+	r0 = r0 + r3;
+	r1 = r1 + r3;
 	p1 = r0;                        /* byte pointers for the remaining columns */
 	p2 = r1;
-	cc = p3 == 0;
+	cc = r2 <= 1;
+	if cc jump .Lpa_one\tag;
+	mnop || r0 = [i3++] || r2 = [i2++];
+	mnop || r1 = [i3++] || r3 = [i2++];
+	(r5, r4) = byteop16p (r1:0, r3:2);
+	r6 = p3;
+	cc = bittst (r6, 0);
+	if cc jump .Lpa_odd\tag;
+	/* Even count: (groups - 2) / 2 looped pairs, then a normal group and a reversed one. */
+	r6 += -2;
+	r6 >>= 1;
+	p3 = r6;
+	cc = r6 == 0;
+	if cc jump .Lpa_even_end\tag;
+	HS_PA_LOOP e\tag
+.Lpa_even_end\tag:
+	i3 -= m3;
+	i2 -= m1;
+	(r7, r6) = byteop16m (r1:0, r3:2) || [p0++] = r4 || r0 = [i3];
+	mnop || [p0++] = r5 || r2 = [i2];
+	[p0++] = r6;
+	(r5, r4) = byteop16p (r1:0, r3:2) (r) || [p0++] = r7;
+	(r7, r6) = byteop16m (r1:0, r3:2) (r) || [p0++] = r4;
+	jump .Lpa_store3\tag;
+.Lpa_odd\tag:
+	/* Odd count: (groups - 3) / 2 looped pairs, a normal group, a reversed one, a normal one. */
+	r6 += -3;
+	r6 >>= 1;
+	p3 = r6;
+	cc = r6 == 0;
+	if cc jump .Lpa_odd_end\tag;
+	HS_PA_LOOP o\tag
+.Lpa_odd_end\tag:
+	(r7, r6) = byteop16m (r1:0, r3:2) || [p0++] = r4 || r0 = [i3++];
+	mnop || [p0++] = r5 || r2 = [i2++];
+	[p0++] = r6;
+	(r5, r4) = byteop16p (r1:0, r3:2) (r) || [p0++] = r7;
+	i3 -= m3;
+	i2 -= m1;
+	(r7, r6) = byteop16m (r1:0, r3:2) (r) || [p0++] = r4 || r1 = [i3];
+	mnop || [p0++] = r5 || r3 = [i2];
+	[p0++] = r6;
+	(r5, r4) = byteop16p (r1:0, r3:2) || [p0++] = r7;
+	(r7, r6) = byteop16m (r1:0, r3:2) || [p0++] = r4;
+	jump .Lpa_store3\tag;
+.Lpa_one\tag:
+	/* One group (or none): both words of it, the second only if the row is misaligned. */
+	cc = r2 == 0;
 	if cc jump .Lpa_tail\tag;
-	p3 += -1;
 	mnop || r0 = [i3 ++ m2] || r2 = [i2 ++ m0];
 	mnop || r1 = [i3 ++ m3] || r3 = [i2 ++ m1];
-	cc = p3 == 0;
-	if cc jump .Lpa_last\tag;
-	lsetup (.Lpa_grp\tag, .Lpa_grp_end\tag) lc0 = p3;
-.Lpa_grp\tag:
-	(r5, r4) = byteop16p (r1:0, r3:2);
-	(r7, r6) = byteop16m (r1:0, r3:2) || [p0++] = r4 || r0 = [i3 ++ m2];
-	mnop || [p0++] = r5 || r1 = [i3 ++ m3];
-	mnop || [p0++] = r6 || r2 = [i2 ++ m0];
-.Lpa_grp_end\tag:
-	mnop || [p0++] = r7 || r3 = [i2 ++ m1];
-.Lpa_last\tag:
 	(r5, r4) = byteop16p (r1:0, r3:2);
 	(r7, r6) = byteop16m (r1:0, r3:2) || [p0++] = r4;
+.Lpa_store3\tag:
 	[p0++] = r5;
 	[p0++] = r6;
 	[p0++] = r7;
@@ -378,7 +433,7 @@ _bvb_hs_iterate_asm:
 	r3 = [fp + HS_ODD];
 	cc = r3 == 0;
 	[i3++] = r2;
-	if cc jump .Lp2_even\tag;
+	if cc jump .Lp2_even\tag (bp);
 	/* Odd width: pixel width-1 alone, its right neighbour itself; the pad after gt' is 0. */
 	r0 = [i0];
 	r2 = 0;

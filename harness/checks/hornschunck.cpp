@@ -280,8 +280,10 @@ void check(Checker &ck) {
   const bool campaign = ck.options().campaign;
   const std::vector<Size> sizes = check_sizes(BVB_HS_MIN_DIM, BVB_HS_MIN_DIM, rng, campaign);
   std::vector<Size> small = sizes;
-  // Every width from 2 to 13 (each residue of the assembly's loop splits) on a few heights.
-  for (int w = 2; w <= 13; ++w) small.push_back({w, rng.uniform(2, 6)});
+  // Every width from 2 to 25 on small heights: each way the assembly splits a row (iteration:
+  // width - 2 mod 3; prepare: 0 to 5 groups of 4 columns, odd/even group counts, 0-3 columns
+  // left over, odd/even width).
+  for (int w = 2; w <= 25; ++w) small.push_back({w, rng.uniform(2, 6)});
 
   if (ck.wants("hs_prepare")) {
     for (Size s : small)
@@ -344,11 +346,18 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
                    size_name(w, h) + " N=" + std::to_string(kBenchIterations));
 }
 
-// Issue counts of the assembly's instruction mapping (one ALU/MAC instruction per cycle with up
-// to two loads or a load and a store; see firmware/asm/hornschunck.S).
+// Issues per pixel of the assembly's instruction mapping, one issue per cycle being one 32-bit
+// ALU/MAC instruction with up to two loads or a load and a store, or one 16-bit instruction
+// (firmware/asm/hornschunck.S derives them):
+//   iteration 10 (ALU/MAC; its 6 loads and 1 store ride along);
+//   prepare 17 = 1 (per-row sums: 4 stores per 4 columns) + 2 (column sums: 8 ALU per 4
+//     columns) + 14 (coefficients: 10 ALU/MAC + 4 pointer moves per pixel);
+//   hornschunck = 1 (zeroing the start flow: a store per pixel) + prepare + 10 per iteration.
 double lower_bound(const std::string &kernel, int w, int h) {
   const double px = double(w) * h;
   if (kernel == "hs_iterate") return 10 * px;
+  if (kernel == "hs_prepare") return 17 * px;
+  if (kernel == "hornschunck") return (1 + 17 + 10.0 * kBenchIterations) * px;
   return 0;
 }
 
