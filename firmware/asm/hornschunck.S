@@ -32,7 +32,7 @@
  *        P0 = SIGNBITS, P0 = counts + 4 P0 (a 12-entry table gives k, k - 5 and 2k - 20 for
  *        three loads riding along, cheaper than computing them), P1 = index,
  *        P1 = rsqrt table + 2 P1.
- *     Measured 17.22-17.87: per row ~110 cycles of set-up, branches and the last pixels.
+ *     Measured 17.22-17.87: ~138 cycles per row of set-up, branches and the border pixels.
  *   Full kernel: 1 (zeroing the start flow, a store per pixel) + 17 + 10 N: 118 at N = 10;
  *     measured 118.68-120.76.
  *   Each is at least 19x faster than the C (prepare 19.3x, iteration 29.8x, full 28.0x at
