@@ -128,15 +128,17 @@ int main(void) {
   struct bvb_command *cmds = (struct bvb_command *)(h + 1);
   volatile struct bvb_header *vh = h; /* the host writes it while we run */
   for (;;) {
+    /* The request these commands answer, read before running them: a request the host makes
+     * after seeing them served is then never mistaken for this one. */
+    const uint32_t request = vh->request;
     for (uint32_t i = vh->first; i < vh->ncommands; ++i) {
       vh->current = i;
       run_command(&cmds[i], window, h->window_size, null_call.cycles);
     }
     vh->state = BVB_FW_DONE;
     if (!(vh->flags & BVB_SERVE)) return 0;
-    const uint32_t seen = vh->request;
-    vh->served = seen;
-    while (vh->request == seen) {
+    vh->served = request;
+    while (vh->request == request) {
     }
     __asm__ volatile("" ::: "memory"); /* commands and buffers changed under us */
     if (vh->request == BVB_STOP) return 0;

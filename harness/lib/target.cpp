@@ -403,6 +403,7 @@ struct Session::Impl {
     h.window_size = layout.size;
     h.ncommands = 1;
     h.flags = BVB_SERVE;
+    h.served = ~0u - 1;  // nothing served yet: request 0 is answered when served becomes 0
     std::memcpy(win, &h, sizeof h);
     encode_call(c, layout.offsets[0], 0, win, true);
     sim::RunSpec spec;

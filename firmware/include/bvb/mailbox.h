@@ -107,8 +107,8 @@ struct bvb_command {
   uint32_t reserved[4];
 };
 
-/* Serving: with BVB_SERVE in flags the firmware, having run its commands, sets served = request
- * and polls request. The host, which maps the same file, rewrites commands and buffers in place
+/* Serving: with BVB_SERVE in flags the firmware reads request, runs its commands, sets served to
+ * the request it read, and polls request. The host, which maps the same file, rewrites commands and buffers in place
  * and bumps request; the firmware runs commands [first, ncommands) again. request = BVB_STOP
  * ends the run. One simulator process then serves a whole frame sequence, buffers the host does
  * not rewrite (a pipeline's state) staying in the window between frames. */
