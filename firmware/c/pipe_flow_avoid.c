@@ -10,6 +10,11 @@ static int32_t scale_band(const uint8_t *band, int32_t stride, int32_t width, in
                           uint8_t *dst) {
   const int32_t ws = width / s, rs = rows / s, shift = s == 8 ? 6 : s == 4 ? 4 : s == 2 ? 2 : 0;
   int32_t total = 0;
+  if (s == 1) {
+    for (int32_t y = 0; y < rows; ++y)
+      for (int32_t x = 0; x < width; ++x) total += dst[y * width + x] = band[y * stride + x];
+    return total;
+  }
   for (int32_t y = 0; y < rs; ++y) {
     for (int32_t x = 0; x < ws; ++x) {
       int32_t sum = 0;
@@ -80,13 +85,20 @@ int32_t bvb_pipe_flow_avoid_run(const struct bvb_flow_avoid_kernels *k, const ui
   out->diag[BVB_FLOW_DIAG_MODE] = mode;
   out->diag[BVB_FLOW_DIAG_DLEFT] = dl;
   out->diag[BVB_FLOW_DIAG_DRIGHT] = dr;
-  if (++stage > limit) goto stopped;
+  /* What the next frame needs to know about this one, whatever the later stages decide. */
+  state->left_ticks = info->left_ticks;
+  state->right_ticks = info->right_ticks;
+  state->have_prev = 1;
+  state->slot = cur_slot;
+  state->bright = bright;
+  state->frames = first ? 1 : state->frames + 1;
+  if (++stage >= limit) goto stopped;
 
   /* 2, 3: the flow from the previous band to this one */
   int16_t *uv = flow_a;
   if (mode == BVB_FLOW_MODE_FLOW) {
     k->hs_prepare(prev, cur, ws, rs, ws, p->alpha2_q4, coef);
-    if (++stage > limit) goto stopped;
+    if (++stage >= limit) goto stopped;
     int32_t *z = (int32_t *)flow_a;
     for (int32_t i = 0; i < ws * rs; ++i) z[i] = 0;
     for (int32_t n = 0; n < p->iterations; ++n) {
@@ -94,10 +106,10 @@ int32_t bvb_pipe_flow_avoid_run(const struct bvb_flow_avoid_kernels *k, const ui
       k->hs_iterate(coef, uv, 4 * ws, next, 4 * ws, ws, rs);
       uv = next;
     }
-    if (++stage > limit) goto stopped;
+    if (++stage >= limit) goto stopped;
   } else {
     stage += 2;
-    if (stage > limit) goto stopped;
+    if (stage >= limit) goto stopped;
   }
 
   /* 4: the balance rule */
@@ -118,15 +130,9 @@ int32_t bvb_pipe_flow_avoid_run(const struct bvb_flow_avoid_kernels *k, const ui
   }
   out->diag[BVB_FLOW_DIAG_MODE] = mode;
   ++stage;
-  state->left_ticks = info->left_ticks;
-  state->right_ticks = info->right_ticks;
   state->turn = turn_left > 0 ? turn : 0;
   state->turn_left = turn_left;
   state->latch = latch;
-  state->have_prev = 1;
-  state->slot = cur_slot;
-  state->bright = bright;
-  state->frames = first ? 1 : state->frames + 1;
   out->decision = decision;
 
 stopped:

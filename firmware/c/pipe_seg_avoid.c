@@ -60,7 +60,7 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
     if (found) seed_x = s;
     if (seed_x != width / 2) flags |= BVB_SEG_FLAG_SEED_MOVED;
   }
-  if (++stage > limit) goto stopped;
+  if (++stage >= limit) goto stopped;
 
   /* 2: the ground region */
   struct bvb_region_params rp;
@@ -71,9 +71,9 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
   rp.connectivity = 4;
   k->region_grow(band, stride, mask, width, width, rows, &rp, queue, p->queue_cap, &st);
   if (st.dropped) flags |= BVB_SEG_FLAG_DROPPED;
-  if (++stage > limit) goto stopped;
+  if (++stage >= limit) goto stopped;
 
-  /* 3: ground tracking; the state changes only once every stage has run (below) */
+  /* 3: ground tracking */
   const int32_t mean = st.count > 0 ? st.sum / st.count : 0;
   const int32_t fmean = band_mean(band, width, rows, stride);
   int32_t ground_q8 = state->ground_q8, lost = 0;
@@ -98,15 +98,20 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
   } else {
     ground_q8 += ((mean << 8) - ground_q8) >> p->avg_shift;
   }
-  if (++stage > limit) goto stopped;
+  state->ground_q8 = ground_q8;
+  state->lost = lost;
+  state->frame_mean = fmean;
+  state->changes = (first ? 0 : state->changes) + ((flags & BVB_SEG_FLAG_CHANGE) != 0);
+  state->frames = first ? 1 : state->frames + 1;
+  if (++stage >= limit) goto stopped;
 
   /* 4: dilate the obstacle map (erode the floor) */
   k->erode(mask, map, width, rows, width, width, morph_scratch);
-  if (++stage > limit) goto stopped;
+  if (++stage >= limit) goto stopped;
 
   /* 5: free space per column */
   k->free_space(map, width, width, rows, p->min_gap, col);
-  if (++stage > limit) goto stopped;
+  if (++stage >= limit) goto stopped;
 
   /* 6: the 30-pixel rule over the robot's path, and the clearance on either side */
   int32_t ahead = rows, left = 0, right = 0;
@@ -129,11 +134,6 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
     decision = state->latch;
   }
   ++stage;
-  state->ground_q8 = ground_q8;
-  state->lost = lost;
-  state->frame_mean = fmean;
-  state->changes = (first ? 0 : state->changes) + ((flags & BVB_SEG_FLAG_CHANGE) != 0);
-  state->frames = first ? 1 : state->frames + 1;
   out->decision = decision;
   out->diag[1] = ahead;
   out->diag[2] = left;

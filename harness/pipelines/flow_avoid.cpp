@@ -138,7 +138,7 @@ void check(Checker &ck) {
     }
   }
   Params prm;
-  auto frames = pipe::render_frames("arena=boxes,path=straight,size=97x61,frames=3,noise=2", 3);
+  auto frames = pipe::render_frames("arena=boxes,path=straight,size=97x61,frames=3,noise=2,uyvy=0,flow=0", 3);
   auto calls = pipe::host_sequence(kFlowAvoid, frames, prm, kState);
   for (size_t i = 0; i < calls.size(); ++i) {
     calls[i].case_name = "boxes 97x61 frame " + std::to_string(i);
@@ -149,7 +149,7 @@ void check(Checker &ck) {
 CheckCall bench_call(const std::string &, int w, int h, Rng &) {
   if (!((w == 160 && h == 120) || (w == 320 && h == 240))) return {};
   // Two frames of the boxes arena's start, 0.5 in apart: the second computes the flow.
-  const std::string spec = "arena=boxes,path=straight,frames=2,size=" + std::to_string(w) + "x" + std::to_string(h);
+  const std::string spec = "arena=boxes,path=straight,frames=2,uyvy=0,flow=0,size=" + std::to_string(w) + "x" + std::to_string(h);
   Params prm;
   auto calls = pipe::host_sequence(kFlowAvoid, pipe::render_frames(spec, 2), prm, kState);
   CheckCall c = std::move(calls[1]);

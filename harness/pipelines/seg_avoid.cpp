@@ -120,7 +120,7 @@ void check(Checker &ck) {
   // Odd sizes are not what the robot's camera gives, but nothing in the orchestration may
   // depend on even ones: three generated 97x61 frames.
   Params prm;
-  auto frames = pipe::render_frames("arena=cylinders,path=straight,size=97x61,frames=3,noise=2", 3);
+  auto frames = pipe::render_frames("arena=cylinders,path=straight,size=97x61,frames=3,noise=2,uyvy=0,flow=0", 3);
   auto calls = pipe::host_sequence(kSegAvoid, frames, prm, kState);
   for (size_t i = 0; i < calls.size(); ++i) {
     calls[i].case_name = "cylinders 97x61 frame " + std::to_string(i);
@@ -132,7 +132,7 @@ CheckCall bench_call(const std::string &, int w, int h, Rng &) {
   if (!((w == 160 && h == 120) || (w == 320 && h == 240))) return {};
   // The boxes arena's start, looking at the red box: the ground region covers most of the
   // floor, and the state is the one the first frame leaves.
-  const std::string spec = "arena=boxes,path=straight,frames=2,size=" + std::to_string(w) + "x" + std::to_string(h);
+  const std::string spec = "arena=boxes,path=straight,frames=2,uyvy=0,flow=0,size=" + std::to_string(w) + "x" + std::to_string(h);
   Params prm;
   auto calls = pipe::host_sequence(kSegAvoid, pipe::render_frames(spec, 2), prm, kState);
   CheckCall c = std::move(calls[1]);
