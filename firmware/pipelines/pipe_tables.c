@@ -19,8 +19,8 @@ int32_t bvb_pipe_seg_avoid_asm(const uint8_t *frame, int32_t width, int32_t heig
 }
 
 static const struct bvb_flow_avoid_kernels flow_asm = {
-    bvb_hs_prepare_c, /* the assembly is not merged yet */
-    bvb_hs_iterate_c,
+    bvb_hs_prepare_asm,
+    bvb_hs_iterate_asm,
 };
 
 int32_t bvb_pipe_flow_avoid_asm(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,
