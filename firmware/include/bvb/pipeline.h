@@ -11,96 +11,121 @@
  *   struct bvb_pipe_result  per-frame output: decision, pose (for odometry pipelines), diag.
  *   state                   caller-owned, kept between frames (the harness keeps it in the
  *                           window); frame index 0 initialises it, so its contents before the
- *                           first frame do not matter. BVB_<NAME>_STATE_BYTES(w, h).
+ *                           first frame do not matter.
  *   working buffers         caller-owned, contents irrelevant between frames; their sizes are
- *                           given below with where the firmware puts them (L1 when they fit).
+ *                           given below with where the harness puts them (L1 when they fit).
  *   Frames: 8-bit grey (the Y plane), width x height, `stride` bytes between rows, in SDRAM
- *   (where the camera's DMA puts them).
- *   Every buffer 4-byte aligned. Returns the decision.
+ *   (where the camera's DMA puts them). Every buffer 4-byte aligned. Returns the decision.
  *
- * PROFILING. info->stages = k > 0 stops after the first k stages (numbered per pipeline below);
- *   result->decision is then BVB_PIPE_STOP, result->diag[0] says how many stages ran and the
- *   state is left as it was. Cycles of stages 1..k minus cycles of 1..k-1 give the cost of
- *   stage k on the same frame and state (bfbench pipeline NAME --param stages=k).
+ * PROFILING. info->stages = k > 0 stops the frame after its first k stages (numbered per
+ *   pipeline below): result->decision is then BVB_PIPE_STOP and diag[0] says how many stages
+ *   ran. Each stage updates the part of the state it owns as it goes, so a scene run with
+ *   stages = k does the same work in stages 1..k on every frame as a full run, as long as no
+ *   decision of a later stage changes what those stages do (open-loop scenes; for flow_avoid,
+ *   turn_frames = 1). Cycles with k stages minus cycles with k - 1 give stage k's cost
+ *   (bfbench pipeline NAME --scene DIR --param stages=k).
  *
  * ============================================================================================
  * SEGMENTATION-BASED OBSTACLE AVOIDANCE (seg_avoid; the seed paper's section 2.1.1)
- *   Stage 1, ground seed. The ground region is seeded at the bottom row, middle column. The
- *     ground intensity G is tracked from frame to frame (state: G in Q8, a running average
- *     G += (m - G) / 2^avg_shift over the frames, m the grown region's mean intensity). If the
- *     bottom-middle pixel differs from G by more than tol, the seed moves along the bottom row
- *     outwards from the middle (x = w/2, w/2-1, w/2+1, w/2-2, ...) to the first pixel within
- *     tol of G, at most seed_search pixels away; when none is, the bottom-middle pixel is used.
- *   Stage 2, region growing (bvb_region_grow, 4-connected, tolerance tol against the region's
- *     running mean) over rows horizon .. height-1 only: the floor cannot appear above the
- *     horizon row, so the rows above are obstacle by definition and cost nothing.
- *   Stage 3, ground tracking. m = region sum / count. A sudden change is |m - G| > change_tol
- *     (grey levels), or a region smaller than min_region pixels. On a sudden change the frame
- *     is not trusted: its decision is a turn (as if blocked: see the decision), and G is
- *     re-seeded to m, i.e. the new ground is trusted from the next frame on. A global lighting
- *     change (the floor 20 levels darker from one frame to the next) therefore costs one frame
- *     of turning in place; a region grown from something that is not floor (an obstacle at the
- *     robot's feet, whose mean is far from G) is turned away from instead of being driven
- *     into. Otherwise G += (m - G) >> avg_shift (Q8; an arithmetic shift, i.e. rounded down).
+ *   The floor is looked for only below the horizon row (p->horizon, from the camera's tilt: the
+ *   floor cannot appear above it): the band of rows horizon .. height-1, `rows` rows.
+ *   Stage 1, seed. The ground region is seeded on the bottom row, in the middle column. The
+ *     ground intensity G is tracked from frame to frame (state, Q8). From frame 1 on, the seed
+ *     is the first pixel of the bottom row within tol of G going outwards from the middle
+ *     (x = w/2, w/2-1, w/2+1, w/2-2, ...), at most seed_search pixels away; when there is none
+ *     the ground is missing at the robot's feet (see stage 3) and the middle pixel is used.
+ *   Stage 2, region growing (bvb_region_grow: 4-connected, tolerance tol against the region's
+ *     running mean) over the band, into `mask` (255 floor).
+ *   Stage 3, ground tracking. m = the region's mean intensity (sum / count), F = the band's mean
+ *     intensity. The ground is
+ *     - as expected when the seed was found, the region has at least min_region pixels and
+ *       |m - G| <= change_tol: G += (m - G) >> avg_shift (a running average; arithmetic shift);
+ *     - changed by the light when the seed was found, the region is large enough, and the
+ *       whole band moved with it: F - F(previous frame) has the sign of m - G and at least half
+ *       its size. A change of the light (the scenes' light_step) darkens or brightens everything
+ *       at once. G is re-seeded: G = m, the new ground is trusted at once, and the frame is
+ *       decided as usual (flag BVB_SEG_FLAG_CHANGE);
+ *     - lost otherwise: no bottom-row pixel near G, a small region, or a region whose mean moved
+ *       while the rest of the band did not (a region grown over the white wall the robot's nose
+ *       is at). The frame is decided as blocked (a turn), G is kept (flag BVB_SEG_FLAG_LOST);
+ *       after lost_frames lost frames in a row the ground is re-seeded from the middle pixel's
+ *       region (G = m): the robot does not turn for ever if the floor itself has changed.
  *     Frame 0 takes G = m.
- *   Stage 4, obstacle map dilation: the region mask (255 floor, 0 obstacle) is eroded 3x3
- *     (bvb_erode3x3_u8), i.e. the obstacle map is dilated: obstacles grow by one pixel, and
- *     single floor pixels the region missed along an obstacle's edge do not open a path.
- *   Stage 5, free space per column (bvb_free_space with min_gap): the row where the floor
- *     stops going up from the bottom; a run of fewer than min_gap non-floor pixels (floor
- *     texture the region growing left out) does not stop it. free(x) = height - 1 - that row,
- *     the column's free-space height in pixels (the horizon row and above are never free, so
- *     free(x) <= height - 1 - horizon).
- *   Stage 6, decision (the 30-pixel rule with left/right clearance):
+ *   Stage 4, obstacle map dilation: the region mask is eroded 3x3 (bvb_erode3x3_u8) into
+ *     `map`: the obstacle map (its complement) is dilated, obstacles grow by one pixel and
+ *     one-pixel floor leaks along an obstacle's edge do not open a path.
+ *   Stage 5, free space per column (bvb_free_space with min_gap): each column filled upward
+ *     from the bottom to the obstacle boundary, a run of fewer than min_gap non-floor pixels
+ *     (the floor texture's darkest patches that the region growing left out: up to about 9 rows
+ *     near the camera at 160x120, after the dilation) not stopping it. free(x) = rows - 1 -
+ *     boundary(x) is the column's free-space height in pixels (rows when free to the horizon).
+ *   Stage 6, decision, the 30-pixel rule with left and right clearance:
  *     ahead = min free(x) over the centre columns [centre_lo, centre_hi);
- *     forward when ahead > go_rows (30 px at 120 rows; the harness scales it with the height:
- *       30 * height / 120, i.e. the same floor distance at every resolution: about 10 in ahead
- *       of the camera with the scene's 4 in high, 10 deg tilted camera);
- *     otherwise turn toward the side with more clearance: left = sum of free(x) for
- *       x < width/2, right = sum for x >= width/2; left when left > right, else right. While
+ *     forward when ahead > go_rows and no side column is short (below) and the ground is not
+ *       lost. go_rows is 30 at 120 rows; the harness scales it with the height (30 * height /
+ *       120, the same floor distance at every resolution). With the scenes' camera (4 in high,
+ *       tilted 10 deg down, 59.5 deg wide) the 30th row from the bottom sees the floor 10 in
+ *       ahead of the camera, 7 in ahead of the robot's front; the scenes' truth calls the path
+ *       blocked from 12 in, so between 12 and 7 in the rule still goes forward.
+ *     The centre columns are those that see the robot's 6 in wide path at that distance
+ *       (with 0.5 in to spare: 20% to 80% of the width). Nearer than that the path spreads
+ *       over the side columns, so a side column x must have free(x) >= needed(x), going down
+ *       linearly from go_rows at the centre band's edge to 0 at the image's edge (a
+ *       conservative outline of the path; flag BVB_SEG_FLAG_SIDE when one is short): the robot
+ *       does not brush a wall or a box corner that passes beside the centre columns.
+ *     Otherwise turn toward the side with more clearance: left = sum of free(x) over
+ *       x < width/2, right = sum over x >= width/2; left when left > right, else right. While
  *       the robot stays blocked the direction is latched (state), so it does not swing back
  *       and forth in front of an obstacle; the first forward decision releases the latch.
- *     A sudden ground change (stage 3) decides like a blocked frame.
  *   diag: [0] stages run, [1] ahead (px), [2] left clearance sum, [3] right clearance sum,
- *     [4] region pixels, [5] region mean (grey level), [6] ground average G (Q8),
- *     [7] flags: bit 0 sudden change, bit 1 seed moved, bit 2 region queue overflowed.
- *   Buffers: mask and map, width x (height - horizon) bytes each (L1 data banks A and B at
- *     160x120; SDRAM at 320x240); work, BVB_SEG_AVOID_WORK_BYTES(w, queue_cap): the region
+ *     [4] region pixels, [5] region mean m, [6] ground average G (Q8), [7] BVB_SEG_FLAG_* bits.
+ *   Buffers: mask and map, width x rows bytes each (L1 data banks A and B at 160x120: 13.6 KB
+ *     each; SDRAM at 320x240); work, BVB_SEG_AVOID_WORK_BYTES(w, queue_cap): the region
  *     growing queue (the breadth-first front of a region grown in a w x h frame stays near
- *     w + h pixels; the harness gives 2 (w + h) entries and reports any overflow in diag), the
+ *     w + h pixels; the harness gives 2 (w + h) entries, and diag reports an overflow), the
  *     column rows (int16) and the erosion's scratch: 3.9 KB at 160x120, the L1 scratchpad.
  *
  * ============================================================================================
  * OPTICAL-FLOW OBSTACLE AVOIDANCE (flow_avoid; the seed paper's section 2.1.2)
- *   The flow between the previous and the current frame (bvb_hornschunck.h: prepare, then
- *   `iterations` Jacobi iterations from zero flow) over a band of rows [band_top, band_top +
- *   band_rows): below the horizon, where the floor and the obstacles standing on it are, and
- *   above the bottom rows, whose floor moves more pixels per frame than Horn-Schunck without a
- *   pyramid can follow. The magnitude of a pixel's flow is |u| + |v| (Q9 px, each pixel's
- *   value limited to 8 px so that sums fit 32 bits at every frame size); L and R are its sums
- *   over the band's left and right halves (columns < width/2 and >= width/2).
- *   The balance rule: the side with more flow has the nearer obstacles (for a translating
- *   camera a point's flow grows with 1 / depth), so
- *     forward when L <= T and R <= T, T = thresh_q9 * (pixels in a half) (thresh_q9 is the
- *       mean magnitude per pixel, Q9 px; the harness scales it with the width);
- *     otherwise turn toward the smaller side (left when L < R, else right), committed for
- *       turn_frames frames (3 deg each in the scenes).
- *   The robot's own rotation: a turn in place moves the whole image by about fx * 3 deg
- *   (7 px at 160x120) per frame, beyond what the flow can measure and carrying no depth
- *   information anyway. So the flow is computed only when the step from the previous frame to
- *   this one was a pure translation, read from the wheel encoders: both wheels advanced and
- *   |dleft - dright| <= rot_ticks. After a turn (or a stop) the robot takes one step forward
- *   without a flow decision (a probe: the flow of that step decides the next frame), and the
- *   frames of a committed turn are not computed at all. Frame 0 probes too. While the robot is
- *   in an avoidance manoeuvre (turned, probed, still above threshold) the turn direction is
- *   latched, so it does not swing back and forth; a forward decision releases it.
- *   Stages: 1 bookkeeping (encoders, committed turn), 2 Horn-Schunck prepare, 3 the
- *     iterations, 4 sums and decision, 5 keep the current band as the next frame's previous.
- *   diag: [0] stages run, [1] L / 512 / pixels of a half ... see BVB_FLOW_DIAG_*.
- *   Buffers: coef, BVB_HS_COEF_BYTES(width, band_rows); flow_a, flow_b, 4 * width * band_rows
- *     bytes each (all SDRAM: 160 x 60 rows need 58 KB of coefficients and 38 KB per flow
- *     buffer); state: BVB_FLOW_AVOID_STATE_BYTES(stride, band_rows), the previous frame's band
- *     (SDRAM; real firmware would keep the previous camera buffer instead of copying).
+ *   Stage 1, the band. Rows [band_top, band_top + band_rows) of the frame, averaged over
+ *     scale x scale blocks (rounded half up; scale 1 copies), into the state's slot for the
+ *     current frame: ws x rs pixels, ws = width / scale, rs = band_rows / scale. The two slots
+ *     take turns as previous and current band, so nothing is copied from frame to frame. Also
+ *     here: what the robot did since the previous frame. The harness's defaults at 160x120:
+ *     rows 0..63, those above the row where the floor is 20 in ahead (with nothing within
+ *     20 in, everything there is far and moves little), and scale 4, a 40 x 16 band (in
+ *     general the largest of 1, 2, 4, 8 that leaves the band at least 40 pixels wide). At the
+ *     scenes' 0.5 in per frame a near obstacle moves several pixels per frame at full
+ *     resolution, beyond what Horn-Schunck without a pyramid follows; its flow is then
+ *     underestimated, the more the nearer it is.
+ *   Stage 2, Horn-Schunck prepare (bvb/hornschunck.h) on the previous and the current band.
+ *   Stage 3, `iterations` (10) Jacobi iterations from zero flow, ping-ponging flow_a/flow_b.
+ *   Stage 4, the balance rule. A pixel's flow magnitude is |u| + |v| (Q9 px of the scaled band,
+ *     limited to 8 px so that sums fit 32 bits at every size); L and R are its means over the
+ *     band's left and right halves (columns < ws/2 and >= ws/2; integer division). The side
+ *     with more flow has the nearer obstacles (a translating camera sees a point move in
+ *     proportion to 1 / depth):
+ *       forward when L <= thresh_q9 and R <= thresh_q9 (80 = 0.16 px per frame, both halves);
+ *       otherwise turn toward the smaller side (left when L <= R, else right), committed for
+ *       turn_frames frames (10: 30 deg at the scenes' 3 deg per frame).
+ *     Stalled: after a step forward both halves at or below stall_q9 (thresh_q9 / 8): the
+ *     wheels turned but the view did not move, the robot is pushing against something it did
+ *     not see: decided as a turn (mode BVB_FLOW_MODE_STALL).
+ *     While the robot is in an avoidance manoeuvre (turned, probed, still above threshold) the
+ *     turn direction is latched; a forward decision of the flow releases it.
+ *   The robot's own rotation. A turn in place moves the whole image by about fx * 3 deg (7 px
+ *   at 160x120) per frame and carries no depth information. So the flow is computed only when
+ *   the step from the previous frame was a pure translation, read from the wheel encoders:
+ *   both wheels advanced and |dleft - dright| <= rot_ticks. The frames of a committed turn
+ *   compute no flow (mode TURN); the first frame after a turn (or a stop, or frame 0) takes
+ *   one step forward without a flow decision (mode PROBE), and the flow of that step decides
+ *   the next frame. A change of the light between the two frames (the bands' mean intensity
+ *   moved by more than light_tol grey levels) breaks the brightness constancy the flow rests
+ *   on: that frame decides nothing either and steps forward (mode LIGHT).
+ *   diag: BVB_FLOW_DIAG_*.
+ *   Buffers (at the defaults they are small; at scale 1 frame-sized, hence SDRAM): coef,
+ *     BVB_FLOW_AVOID_COEF_BYTES; flow_a, flow_b, BVB_FLOW_AVOID_FLOW_BYTES each; state,
+ *     BVB_FLOW_AVOID_STATE_BYTES (two band slots). All in SDRAM in the harness.
  */
 #ifndef BVB_PIPELINE_H
 #define BVB_PIPELINE_H
@@ -238,7 +263,7 @@ struct bvb_flow_avoid_state {
 
 /* diag of flow_avoid */
 #define BVB_FLOW_DIAG_STAGES 0
-#define BVB_FLOW_DIAG_LEFT 1      /* L / pixels of a half: mean magnitude, Q9 px (-1: no flow) */
+#define BVB_FLOW_DIAG_LEFT 1      /* L: mean magnitude over the left half, Q9 px (-1: no flow) */
 #define BVB_FLOW_DIAG_RIGHT 2     /* R likewise */
 #define BVB_FLOW_DIAG_MODE 3      /* see enum bvb_flow_mode */
 #define BVB_FLOW_DIAG_DLEFT 4     /* encoder increments since the previous frame */
