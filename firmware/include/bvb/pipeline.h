@@ -1,0 +1,307 @@
+/* The robot's vision pipelines: one camera frame in, one steering decision (or pose) out, with
+ * state kept from frame to frame. Each pipeline is C orchestration over a table of kernel entry
+ * points: bvb_pipe_<name>_c runs it over the C references (the host build runs the same
+ * source), bvb_pipe_<name>_asm over the hand-written kernels where they exist (its table lives
+ * in the firmware only, firmware/pipelines/pipe_tables.c). The orchestration, and therefore
+ * every decision, is the same code in both; only the kernels' speed differs.
+ *
+ * COMMON INTERFACE
+ *   struct bvb_pipe_frame   per-frame input: frame index, cumulative wheel encoder ticks, and a
+ *                           stage limit for profiling.
+ *   struct bvb_pipe_result  per-frame output: decision, pose (for odometry pipelines), diag.
+ *   state                   caller-owned, kept between frames (the harness keeps it in the
+ *                           window); frame index 0 initialises it, so its contents before the
+ *                           first frame do not matter.
+ *   working buffers         caller-owned, contents irrelevant between frames; their sizes are
+ *                           given below with where the harness puts them (L1 when they fit).
+ *   Frames: 8-bit grey (the Y plane), width x height, `stride` bytes between rows, in SDRAM
+ *   (where the camera's DMA puts them). Every buffer 4-byte aligned. Returns the decision.
+ *
+ * PROFILING. info->stages = k > 0 stops the frame after its first k stages (numbered per
+ *   pipeline below): result->decision is then BVB_PIPE_STOP and diag[0] says how many stages
+ *   ran. Each stage updates the part of the state it owns as it goes, so a scene run with
+ *   stages = k does the same work in stages 1..k on every frame as a full run, as long as no
+ *   decision of a later stage changes what those stages do (open-loop scenes; for flow_avoid,
+ *   turn_frames = 1). Cycles with k stages minus cycles with k - 1 give stage k's cost
+ *   (bfbench pipeline NAME --scene DIR --param stages=k).
+ *
+ * ============================================================================================
+ * SEGMENTATION-BASED OBSTACLE AVOIDANCE (seg_avoid; the seed paper's section 2.1.1)
+ *   The floor is looked for only below the horizon row (p->horizon, from the camera's tilt: the
+ *   floor cannot appear above it): the band of rows horizon .. height-1, `rows` rows.
+ *   Stage 1, seed. The ground region is seeded on the bottom row, in the middle column. The
+ *     ground intensity G is tracked from frame to frame (state, Q8). From frame 1 on, the seed
+ *     is the first pixel of the bottom row within tol of G going outwards from the middle
+ *     (x = w/2, w/2-1, w/2+1, w/2-2, ...), at most seed_search pixels away; when there is none
+ *     the ground is missing at the robot's feet (see stage 3) and the middle pixel is used.
+ *   Stage 2, region growing (bvb_region_grow: 4-connected, tolerance tol against the region's
+ *     running mean) over the band, into `mask` (255 floor).
+ *   Stage 3, ground tracking. m = the region's mean intensity (sum / count), F = the band's mean
+ *     intensity. The ground is
+ *     - as expected when the seed was found, the region has at least min_region pixels and
+ *       |m - G| <= change_tol: G += (m - G) >> avg_shift (a running average; arithmetic shift);
+ *     - changed by the light when the seed was found, the region is large enough, and the
+ *       whole band moved with it: F - F(previous frame) has the sign of m - G and at least half
+ *       its size. A change of the light (the scenes' light_step) darkens or brightens everything
+ *       at once. G is re-seeded: G = m, the new ground is trusted at once, and the frame is
+ *       decided as usual (flag BVB_SEG_FLAG_CHANGE);
+ *     - lost otherwise: no bottom-row pixel near G, a small region, or a region whose mean moved
+ *       while the rest of the band did not (a region grown over the white wall the robot's nose
+ *       is at). The frame is decided as blocked (a turn), G is kept (flag BVB_SEG_FLAG_LOST);
+ *       after lost_frames lost frames in a row the ground is re-seeded from the middle pixel's
+ *       region (G = m): the robot does not turn for ever if the floor itself has changed.
+ *     Frame 0 takes G = m.
+ *   Stage 4, obstacle map dilation: the region mask is eroded 3x3 (bvb_erode3x3_u8) into
+ *     `map`: the obstacle map (its complement) is dilated, obstacles grow by one pixel and
+ *     one-pixel floor leaks along an obstacle's edge do not open a path.
+ *   Stage 5, free space per column (bvb_free_space with min_gap): each column filled upward
+ *     from the bottom to the obstacle boundary, a run of fewer than min_gap non-floor pixels
+ *     (the floor texture's darkest patches that the region growing left out: up to about 9 rows
+ *     near the camera at 160x120, after the dilation) not stopping it. free(x) = rows - 1 -
+ *     boundary(x) is the column's free-space height in pixels (rows when free to the horizon).
+ *   Stage 6, decision, the 30-pixel rule with left and right clearance:
+ *     ahead = min free(x) over the centre columns [centre_lo, centre_hi);
+ *     forward when ahead > go_rows and no side column is short (below) and the ground is not
+ *       lost. go_rows is 30 at 120 rows; the harness scales it with the height (30 * height /
+ *       120, the same floor distance at every resolution). With the scenes' camera (4 in high,
+ *       tilted 10 deg down, 59.5 deg wide) the 30th row from the bottom sees the floor 10 in
+ *       ahead of the camera, 7 in ahead of the robot's front; the scenes' truth calls the path
+ *       blocked from 12 in, so between 12 and 7 in the rule still goes forward.
+ *     The centre columns are those that see the robot's 6 in wide path at that distance
+ *       (with 0.5 in to spare: 20% to 80% of the width). Nearer than that the path spreads
+ *       over the side columns, so a side column x must have free(x) >= needed(x), going down
+ *       linearly from go_rows at the centre band's edge to 0 at the image's edge (a
+ *       conservative outline of the path; flag BVB_SEG_FLAG_SIDE when one is short): the robot
+ *       does not brush a wall or a box corner that passes beside the centre columns.
+ *     Otherwise turn toward the side with more clearance: left = sum of free(x) over
+ *       x < width/2, right = sum over x >= width/2; left when left > right, else right. While
+ *       the robot stays blocked the direction is latched (state), so it does not swing back
+ *       and forth in front of an obstacle; the first forward decision releases the latch.
+ *   diag: [0] stages run, [1] ahead (px), [2] left clearance sum, [3] right clearance sum,
+ *     [4] region pixels, [5] region mean m, [6] ground average G (Q8), [7] BVB_SEG_FLAG_* bits.
+ *   Buffers: mask and map, width x rows bytes each (L1 data banks A and B at 160x120: 13.6 KB
+ *     each; SDRAM at 320x240); work, BVB_SEG_AVOID_WORK_BYTES(w, queue_cap): the region
+ *     growing queue (the breadth-first front of a region grown in a w x h frame stays near
+ *     w + h pixels; the harness gives 2 (w + h) entries, and diag reports an overflow), the
+ *     column rows (int16) and the erosion's scratch: 3.9 KB at 160x120, the L1 scratchpad.
+ *
+ * ============================================================================================
+ * OPTICAL-FLOW OBSTACLE AVOIDANCE (flow_avoid; the seed paper's section 2.1.2)
+ *   Stage 1, the band. Rows [band_top, band_top + band_rows) of the frame, averaged over
+ *     scale x scale blocks (rounded half up; scale 1 copies), into the state's slot for the
+ *     current frame: ws x rs pixels, ws = width / scale, rs = band_rows / scale. The two slots
+ *     take turns as previous and current band, so nothing is copied from frame to frame. Also
+ *     here: what the robot did since the previous frame. The harness's defaults at 160x120:
+ *     rows 0..63, those above the row where the floor is 20 in ahead (with nothing within
+ *     20 in, everything there is far and moves little), and scale 4, a 40 x 16 band (in
+ *     general the largest of 1, 2, 4, 8 that leaves the band at least 40 pixels wide). At the
+ *     scenes' 0.5 in per frame a near obstacle moves several pixels per frame at full
+ *     resolution, beyond what Horn-Schunck without a pyramid follows; its flow is then
+ *     underestimated, the more the nearer it is.
+ *   Stage 2, Horn-Schunck prepare (bvb/hornschunck.h) on the previous and the current band.
+ *   Stage 3, `iterations` (10) Jacobi iterations from zero flow, ping-ponging flow_a/flow_b.
+ *   Stage 4, the balance rule. A pixel's flow magnitude is |u| + |v| (Q9 px of the scaled band,
+ *     limited to 8 px so that sums fit 32 bits at every size); L and R are its means over the
+ *     band's left and right halves (columns < ws/2 and >= ws/2; integer division). The side
+ *     with more flow has the nearer obstacles (a translating camera sees a point move in
+ *     proportion to 1 / depth):
+ *       forward when L <= thresh_q9 and R <= thresh_q9 (80 = 0.16 px per frame, both halves);
+ *       otherwise turn toward the smaller side (left when L <= R, else right), committed for
+ *       turn_frames frames (10: 30 deg at the scenes' 3 deg per frame).
+ *     Stalled: after a step forward both halves at or below stall_q9 (thresh_q9 / 8): the
+ *     wheels turned but the view did not move, the robot is pushing against something it did
+ *     not see: decided as a turn (mode BVB_FLOW_MODE_STALL).
+ *     While the robot is in an avoidance manoeuvre (turned, probed, still above threshold) the
+ *     turn direction is latched; a forward decision of the flow releases it.
+ *   The robot's own rotation. A turn in place moves the whole image by about fx * 3 deg (7 px
+ *   at 160x120) per frame and carries no depth information. So the flow is computed only when
+ *   the step from the previous frame was a pure translation, read from the wheel encoders:
+ *   both wheels advanced and |dleft - dright| <= rot_ticks. The frames of a committed turn
+ *   compute no flow (mode TURN); the first frame after a turn (or a stop, or frame 0) takes
+ *   one step forward without a flow decision (mode PROBE), and the flow of that step decides
+ *   the next frame. A change of the light between the two frames (the bands' mean intensity
+ *   moved by more than light_tol grey levels) breaks the brightness constancy the flow rests
+ *   on: that frame decides nothing either and steps forward (mode LIGHT).
+ *   diag: BVB_FLOW_DIAG_*.
+ *   Buffers (at the defaults they are small; at scale 1 frame-sized, hence SDRAM): coef,
+ *     BVB_FLOW_AVOID_COEF_BYTES; flow_a, flow_b, BVB_FLOW_AVOID_FLOW_BYTES each; state,
+ *     BVB_FLOW_AVOID_STATE_BYTES (two band slots). All in SDRAM in the harness.
+ */
+#ifndef BVB_PIPELINE_H
+#define BVB_PIPELINE_H
+
+#include <stdint.h>
+
+#include "bvb/hornschunck.h"
+#include "bvb/morph.h"
+#include "bvb/region.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Decisions: the same order as the harness's Drive. */
+enum bvb_pipe_decision { BVB_PIPE_STOP = 0, BVB_PIPE_FORWARD = 1, BVB_PIPE_LEFT = 2, BVB_PIPE_RIGHT = 3 };
+
+#define BVB_PIPE_DIAG 8
+
+struct bvb_pipe_frame {
+  int32_t index;                   /* 0: the first frame (state initialised) */
+  int32_t left_ticks, right_ticks; /* cumulative wheel encoder counts */
+  int32_t stages;                  /* > 0: stop after this many stages (profiling) */
+};
+
+struct bvb_pipe_result {
+  int32_t decision;                      /* enum bvb_pipe_decision */
+  int32_t has_pose;                      /* 1 when x, y, heading are set (odometry pipelines) */
+  int32_t x_q16, y_q16, heading_q16;     /* inches, inches, degrees (counter-clockwise), Q16 */
+  int32_t diag[BVB_PIPE_DIAG];           /* pipeline-specific, see above */
+};
+
+/* ---- segmentation-based avoidance ---- */
+
+struct bvb_seg_avoid_params {
+  int32_t tol;           /* region growing tolerance, grey levels */
+  int32_t seed_search;   /* how far along the bottom row the seed may move, pixels */
+  int32_t horizon;       /* first row that can show floor */
+  int32_t change_tol;    /* sudden ground change: |region mean - G| above this, grey levels */
+  int32_t min_region;    /* a region of fewer pixels is not the ground */
+  int32_t lost_frames;   /* after this many frames without the ground, trust the new one */
+  int32_t avg_shift;     /* G's running average weight 1 / 2^avg_shift, 0..8 */
+  int32_t min_gap;       /* free_space's obstacle run, rows */
+  int32_t go_rows;       /* forward when the centre columns' free space exceeds this */
+  int32_t centre_lo, centre_hi; /* the centre columns [lo, hi) */
+  int32_t queue_cap;     /* entries of the region growing queue (in work) */
+};
+
+struct bvb_seg_avoid_state {
+  int32_t ground_q8; /* G */
+  int32_t latch;     /* 0, or the latched turn decision */
+  int32_t frames;    /* frames seen */
+  int32_t changes;   /* sudden ground changes seen */
+  int32_t lost;      /* consecutive frames without the ground */
+  int32_t frame_mean; /* the previous frame's mean below the horizon */
+  int32_t pad[2];
+};
+
+#define BVB_SEG_AVOID_STATE_BYTES ((int32_t)sizeof(struct bvb_seg_avoid_state))
+#define BVB_SEG_AVOID_ROWS_BYTES(w) (2 * (((w) + 1) & ~1))
+/* work: the region growing queue (queue_cap int32), the column rows, the erosion's scratch */
+#define BVB_SEG_AVOID_WORK_BYTES(w, queue_cap) \
+  (4 * (queue_cap) + BVB_SEG_AVOID_ROWS_BYTES(w) + BVB_MORPH3X3_SCRATCH_BYTES(w))
+#define BVB_SEG_AVOID_STAGES 6
+
+#define BVB_SEG_FLAG_CHANGE 1
+#define BVB_SEG_FLAG_SEED_MOVED 2
+#define BVB_SEG_FLAG_DROPPED 4
+#define BVB_SEG_FLAG_LOST 8
+#define BVB_SEG_FLAG_SIDE 16
+
+struct bvb_seg_avoid_kernels {
+  int32_t (*region_grow)(const uint8_t *img, int32_t img_stride, uint8_t *mask, int32_t mask_stride,
+                         int32_t width, int32_t height, const struct bvb_region_params *p,
+                         int32_t *queue, int32_t queue_cap, struct bvb_region_stats *stats);
+  void (*erode)(const uint8_t *src, uint8_t *dst, int32_t width, int32_t height, int32_t src_stride,
+                int32_t dst_stride, void *scratch);
+  void (*free_space)(const uint8_t *mask, int32_t mask_stride, int32_t width, int32_t height,
+                     int32_t min_gap, int16_t *rows);
+};
+
+/* The orchestration over a kernel table (what _c and _asm call). */
+int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint8_t *frame,
+                               int32_t width, int32_t height, int32_t stride,
+                               const struct bvb_pipe_frame *info, const struct bvb_seg_avoid_params *p,
+                               struct bvb_seg_avoid_state *state, struct bvb_pipe_result *out,
+                               uint8_t *mask, uint8_t *map, void *work);
+
+/* Registry entries (the harness's windows carry at most 8 buffers, hence one work buffer). */
+int32_t bvb_pipe_seg_avoid_c(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,
+                             const struct bvb_pipe_frame *info, const struct bvb_seg_avoid_params *p,
+                             struct bvb_seg_avoid_state *state, struct bvb_pipe_result *out,
+                             uint8_t *mask, uint8_t *map, void *work);
+int32_t bvb_pipe_seg_avoid_asm(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,
+                               const struct bvb_pipe_frame *info, const struct bvb_seg_avoid_params *p,
+                               struct bvb_seg_avoid_state *state, struct bvb_pipe_result *out,
+                               uint8_t *mask, uint8_t *map, void *work);
+
+/* ---- optical-flow avoidance ---- */
+
+struct bvb_flow_avoid_params {
+  int32_t alpha2_q4;   /* Horn-Schunck smoothness, 16 alpha^2 (bvb/hornschunck.h) */
+  int32_t iterations;  /* Jacobi iterations, >= 0 */
+  int32_t band_top, band_rows; /* the frame rows the flow is computed and summed over */
+  int32_t scale;       /* 1, 2, 4 or 8: the band is averaged over scale x scale blocks first */
+  int32_t thresh_q9;   /* T: mean |u| + |v| over a half, Q9 pixels of the scaled band */
+  int32_t stall_q9;    /* both halves at or below this after a step forward: stalled */
+  int32_t turn_frames; /* a turn decision is kept this many frames (>= 1) */
+  int32_t rot_ticks;   /* an encoder difference above this is a rotation */
+  int32_t light_tol;   /* a band mean that moved more than this (grey levels): the light changed */
+};
+
+struct bvb_flow_avoid_state {
+  int32_t left_ticks, right_ticks; /* at the previous frame */
+  int32_t turn;        /* the committed turn's decision, 0 when none */
+  int32_t turn_left;   /* frames of it still to go */
+  int32_t latch;       /* the latched turn direction during a manoeuvre, 0 when none */
+  int32_t have_prev;   /* the previous band is valid */
+  int32_t slot;        /* which of the two band slots below holds the previous band */
+  int32_t bright;      /* the previous band's mean intensity */
+  int32_t frames;
+  int32_t pad[3];
+  /* then two slots, BVB_FLOW_AVOID_SLOT_BYTES each: the scaled bands of the previous and the
+   * current frame, taking turns (no copy from frame to frame) */
+};
+
+/* The scaled band: (width / scale) x (band_rows / scale) bytes, packed. */
+#define BVB_FLOW_AVOID_SLOT_BYTES(w, rows, scale) (((((w) / (scale)) * ((rows) / (scale))) + 3) & ~3)
+#define BVB_FLOW_AVOID_STATE_BYTES(w, rows, scale) \
+  ((int32_t)sizeof(struct bvb_flow_avoid_state) + 2 * BVB_FLOW_AVOID_SLOT_BYTES(w, rows, scale))
+#define BVB_FLOW_AVOID_FLOW_BYTES(w, rows, scale) (4 * ((w) / (scale)) * ((rows) / (scale)))
+#define BVB_FLOW_AVOID_COEF_BYTES(w, rows, scale) BVB_HS_COEF_BYTES((w) / (scale), (rows) / (scale))
+#define BVB_FLOW_AVOID_MAX_MAG (8 << BVB_HS_UV_FRAC_BITS) /* per-pixel limit, Q9 */
+#define BVB_FLOW_AVOID_STAGES 4
+
+/* diag of flow_avoid */
+#define BVB_FLOW_DIAG_STAGES 0
+#define BVB_FLOW_DIAG_LEFT 1      /* L: mean magnitude over the left half, Q9 px (-1: no flow) */
+#define BVB_FLOW_DIAG_RIGHT 2     /* R likewise */
+#define BVB_FLOW_DIAG_MODE 3      /* see enum bvb_flow_mode */
+#define BVB_FLOW_DIAG_DLEFT 4     /* encoder increments since the previous frame */
+#define BVB_FLOW_DIAG_DRIGHT 5
+#define BVB_FLOW_DIAG_LATCH 6
+
+enum bvb_flow_mode {
+  BVB_FLOW_MODE_FLOW = 0,  /* the decision came from the flow */
+  BVB_FLOW_MODE_PROBE = 1, /* no usable flow (first frame, after a turn or a stop): forward */
+  BVB_FLOW_MODE_TURN = 2,  /* inside a committed turn */
+  BVB_FLOW_MODE_LIGHT = 3, /* the light changed between the frames: no flow decision, forward */
+  BVB_FLOW_MODE_STALL = 4  /* the wheels moved, the view did not: blocked, turn */
+};
+
+struct bvb_flow_avoid_kernels {
+  void (*hs_prepare)(const uint8_t *i1, const uint8_t *i2, int32_t width, int32_t height, int32_t stride,
+                     int32_t alpha2_q4, int16_t *coef);
+  void (*hs_iterate)(const int16_t *coef, const int16_t *uv_in, int32_t in_stride, int16_t *uv_out,
+                     int32_t out_stride, int32_t width, int32_t height);
+};
+
+int32_t bvb_pipe_flow_avoid_run(const struct bvb_flow_avoid_kernels *k, const uint8_t *frame,
+                                int32_t width, int32_t height, int32_t stride,
+                                const struct bvb_pipe_frame *info, const struct bvb_flow_avoid_params *p,
+                                struct bvb_flow_avoid_state *state, struct bvb_pipe_result *out,
+                                int16_t *coef, int16_t *flow_a, int16_t *flow_b);
+
+int32_t bvb_pipe_flow_avoid_c(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,
+                              const struct bvb_pipe_frame *info, const struct bvb_flow_avoid_params *p,
+                              struct bvb_flow_avoid_state *state, struct bvb_pipe_result *out,
+                              int16_t *coef, int16_t *flow_a, int16_t *flow_b);
+int32_t bvb_pipe_flow_avoid_asm(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,
+                                const struct bvb_pipe_frame *info, const struct bvb_flow_avoid_params *p,
+                                struct bvb_flow_avoid_state *state, struct bvb_pipe_result *out,
+                                int16_t *coef, int16_t *flow_a, int16_t *flow_b);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
