@@ -1,0 +1,298 @@
+#include "bvb/lk.h"
+
+/* ---- pyramid ---- */
+
+uint32_t bvb_lk_level_offset(int32_t width, int32_t height, int32_t level) {
+  uint32_t off = 0;
+  for (int32_t l = 1; l < level; ++l) {
+    width >>= 1;
+    height >>= 1;
+    off += (uint32_t)BVB_LK_LEVEL_STRIDE(width) * (uint32_t)height;
+  }
+  return off;
+}
+
+uint32_t bvb_lk_pyramid_bytes(int32_t width, int32_t height, int32_t levels) {
+  return bvb_lk_level_offset(width, height, levels);
+}
+
+void bvb_lk_pyramid_c(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
+                      int32_t levels, uint8_t *pyr) {
+  const uint8_t *in = src;
+  int32_t in_stride = stride;
+  for (int32_t l = 1; l < levels; ++l) {
+    const int32_t w = width >> 1, h = height >> 1, s = BVB_LK_LEVEL_STRIDE(w);
+    uint8_t *out = pyr;
+    for (int32_t y = 0; y < h; ++y) {
+      const uint8_t *a = in + 2 * y * in_stride, *b = a + in_stride;
+      uint8_t *o = out + y * s;
+      for (int32_t x = 0; x < w; ++x)
+        o[x] = (uint8_t)((a[2 * x] + a[2 * x + 1] + b[2 * x] + b[2 * x + 1] + 2) >> 2);
+    }
+    in = out;
+    in_stride = s;
+    pyr += s * h;
+    width = w;
+    height = h;
+  }
+}
+
+/* ---- fixed-point helpers ---- */
+
+static int32_t bitlen(uint32_t v) {
+  int32_t n = 0;
+  while (v) {
+    ++n;
+    v >>= 1;
+  }
+  return n;
+}
+
+/* The Blackfin's SIGNBITS of a 32-bit value. */
+static int32_t signbits(int32_t v) {
+  return 31 - bitlen(v < 0 ? ~(uint32_t)v : (uint32_t)v);
+}
+
+/* v * 2^-s with floor, or v * 2^-s exactly for s < 0 (the caller knows it fits). */
+static int32_t shift_by(int32_t v, int32_t s) {
+  return s >= 0 ? v >> s : v * (int32_t)(1u << -s);
+}
+
+/* floor(v / 16) for int64 without shifting a negative value. */
+static int64_t floor16(int64_t v) {
+  return v < 0 ? ~((~v) >> 4) : v >> 4;
+}
+
+/* The Q5 bilinear value at integer (x, y) with fractions fx, fy (Q7). */
+static int32_t interp(const uint8_t *img, int32_t stride, int32_t x, int32_t y, int32_t fx, int32_t fy) {
+  const uint8_t *p = img + y * stride + x;
+  const int32_t h0 = (128 - fx) * p[0] + fx * p[1];
+  const int32_t h1 = (128 - fx) * p[stride] + fx * p[stride + 1];
+  return ((128 - fy) * h0 + fy * h1) >> 9;
+}
+
+/* ---- the inner steps, C ---- */
+
+void bvb_lk_patch_c(const uint8_t *img, int16_t *tmpl, int32_t *grad, int16_t *work, int32_t *block) {
+  const int32_t stride = block[BVB_LK_PA_STRIDE], ix = block[BVB_LK_PA_IX], iy = block[BVB_LK_PA_IY];
+  const int32_t fx = block[BVB_LK_PA_FX], fy = block[BVB_LK_PA_FY];
+  const int32_t hx = block[BVB_LK_PA_HX], hy = block[BVB_LK_PA_HY];
+  const int32_t wx = 2 * hx + 1, wy = 2 * hy + 1, wxp = wx + 1, er = wx + 3;
+  int16_t *g = (int16_t *)grad;
+  /* the extended template, (wx + 2) x (wy + 2), rows of er */
+  for (int32_t j = -hy - 1; j <= hy + 1; ++j)
+    for (int32_t i = -hx - 1; i <= hx + 1; ++i)
+      work[(j + hy + 1) * er + i + hx + 1] = (int16_t)interp(img, stride, ix + i, iy + j, fx, fy);
+  int64_t sxx = 0, sxy = 0, syy = 0;
+  for (int32_t j = 0; j < wy; ++j) {
+    const int16_t *t = work + (j + 1) * er + 1;
+    for (int32_t i = 0; i < wx; ++i) {
+      const int32_t gx = t[i + 1] - t[i - 1], gy = t[i + er] - t[i - er];
+      tmpl[j * wxp + i] = t[i];
+      g[2 * (j * wxp + i)] = (int16_t)gx;
+      g[2 * (j * wxp + i) + 1] = (int16_t)gy;
+      sxx += gx * gx;
+      sxy += gx * gy;
+      syy += gy * gy;
+    }
+    tmpl[j * wxp + wx] = 0;
+    g[2 * (j * wxp + wx)] = 0;
+    g[2 * (j * wxp + wx) + 1] = 0;
+  }
+  block[BVB_LK_PA_GXX] = (int32_t)floor16(sxx);
+  block[BVB_LK_PA_GXY] = (int32_t)floor16(sxy);
+  block[BVB_LK_PA_GYY] = (int32_t)floor16(syy);
+}
+
+static int32_t clamp_step(int64_t v) {
+  const int64_t lim = (int64_t)1 << 22;
+  return (int32_t)(v > lim ? lim : v < -lim ? -lim : v);
+}
+
+/* eta = P 2^-(shift) clamped to +-2^22, shift in [-47, 26]. */
+static int32_t scale_step(int32_t p, int32_t shift) {
+  if (shift >= 0) return clamp_step(p >> shift);
+  const int32_t k = -shift > 32 ? 32 : -shift;
+  return clamp_step((int64_t)p * ((int64_t)1 << k));
+}
+
+int32_t bvb_lk_iterate_c(const uint8_t *img, const int16_t *tmpl, const int32_t *grad, int16_t *work,
+                         int32_t *block) {
+  (void)work;
+  const int32_t stride = block[BVB_LK_IT_STRIDE], width = block[BVB_LK_IT_WIDTH];
+  const int32_t height = block[BVB_LK_IT_HEIGHT], hx = block[BVB_LK_IT_HX], hy = block[BVB_LK_IT_HY];
+  const int32_t mxx = block[BVB_LK_IT_MXX], mxy = block[BVB_LK_IT_MXY], myy = block[BVB_LK_IT_MYY];
+  const int32_t shift = block[BVB_LK_IT_SHIFT], max_iter = block[BVB_LK_IT_MAXITER];
+  const int32_t eps = block[BVB_LK_IT_EPS], fixed = block[BVB_LK_IT_FIXED];
+  const int32_t wx = 2 * hx + 1, wy = 2 * hy + 1, wxp = wx + 1;
+  const int16_t *g = (const int16_t *)grad;
+  int32_t qx = block[BVB_LK_IT_QX], qy = block[BVB_LK_IT_QY];
+  int32_t converged = 0;
+  for (int32_t it = 1; it <= max_iter; ++it) {
+    const int32_t q7x = (qx + 256) >> 9, q7y = (qy + 256) >> 9;
+    const int32_t ix = q7x >> 7, iy = q7y >> 7, fx = q7x & 127, fy = q7y & 127;
+    if (ix - hx < 0 || ix + hx + 1 > width - 1 || iy - hy < 0 || iy + hy + 1 > height - 1) {
+      block[BVB_LK_IT_QX] = qx;
+      block[BVB_LK_IT_QY] = qy;
+      block[BVB_LK_IT_ITERS] = it - 1;
+      return BVB_LK_LEFT;
+    }
+    int64_t sx = 0, sy = 0;
+    for (int32_t j = 0; j < wy; ++j)
+      for (int32_t i = 0; i < wx; ++i) {
+        const int32_t k = j * wxp + i;
+        const int32_t d = tmpl[k] - interp(img, stride, ix - hx + i, iy - hy + j, fx, fy);
+        sx += d * g[2 * k];
+        sy += d * g[2 * k + 1];
+      }
+    const int32_t bx = (int32_t)floor16(sx), by = (int32_t)floor16(sy);
+    const int32_t sb = signbits(bx) < signbits(by) ? signbits(bx) : signbits(by);
+    const int32_t t = sb < 16 ? 16 - sb : 0;
+    const int32_t nx = bx >> t, ny = by >> t;
+    const int32_t ex = scale_step(mxx * nx + mxy * ny, shift - t);
+    const int32_t ey = scale_step(mxy * nx + myy * ny, shift - t);
+    qx += ex;
+    qy += ey;
+    block[BVB_LK_IT_BX] = bx;
+    block[BVB_LK_IT_BY] = by;
+    converged = ex <= eps && ex >= -eps && ey <= eps && ey >= -eps;
+    if (converged && !fixed) {
+      block[BVB_LK_IT_QX] = qx;
+      block[BVB_LK_IT_QY] = qy;
+      block[BVB_LK_IT_ITERS] = it;
+      return BVB_LK_TRACKED;
+    }
+  }
+  block[BVB_LK_IT_QX] = qx;
+  block[BVB_LK_IT_QY] = qy;
+  block[BVB_LK_IT_ITERS] = max_iter;
+  return converged ? BVB_LK_TRACKED : BVB_LK_NOT_CONVERGED;
+}
+
+/* ---- the driver ---- */
+
+/* The inverse of the structure tensor for the iteration block; returns 0 when flat. */
+static int32_t setup_solve(const int32_t *pa, int32_t npix, int32_t min_det, int32_t *it) {
+  const int32_t gxx = pa[BVB_LK_PA_GXX], gxy = pa[BVB_LK_PA_GXY], gyy = pa[BVB_LK_PA_GYY];
+  const int64_t det = (int64_t)gxx * gyy - (int64_t)gxy * gxy;
+  if (det < (int64_t)min_det * 65536 * npix * npix) return 0;
+  const int32_t m = gxx > gyy ? gxx : gyy;
+  if (m <= 0) return 0;
+  const int32_t s = bitlen((uint32_t)m) - 15;
+  const int32_t a = shift_by(gxx, s), d = shift_by(gyy, s);
+  int32_t c = shift_by(gxy, s);
+  if (c > 32767) c = 32767;
+  if (c < -32767) c = -32767;
+  const int32_t dd = a * d - c * c;
+  if (dd <= 0) return 0;
+  const int32_t u = bitlen((uint32_t)dd) - 15;
+  const int32_t r = (1 << 28) / shift_by(dd, u);
+  it[BVB_LK_IT_MXX] = (d * r) >> 15;
+  it[BVB_LK_IT_MXY] = (-c * r) >> 15;
+  it[BVB_LK_IT_MYY] = (a * r) >> 15;
+  it[BVB_LK_IT_SHIFT] = s + u - 4;
+  return 1;
+}
+
+static int32_t inside(int32_t q7x, int32_t q7y, int32_t hx, int32_t hy, int32_t w, int32_t h, int32_t margin) {
+  const int32_t ix = q7x >> 7, iy = q7y >> 7;
+  return ix - hx - margin >= 0 && ix + hx + 1 + margin <= w - 1 && iy - hy - margin >= 0 &&
+         iy + hy + 1 + margin <= h - 1;
+}
+
+void bvb_lk_track_run(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_t *next,
+                      const uint8_t *next_pyr, int32_t width, int32_t height, int32_t stride,
+                      const struct bvb_lk_params *params, const int32_t *in, int32_t *out,
+                      void *scratch, const struct bvb_lk_ops *ops) {
+  const int32_t levels = params->levels, hx = params->win_w >> 1, hy = params->win_h >> 1;
+  const int32_t wxp = 2 * hx + 2, wy = 2 * hy + 1, npix = (2 * hx + 1) * wy;
+  int16_t *tmpl = (int16_t *)scratch;
+  int32_t *grad = (int32_t *)(tmpl + wxp * wy);
+  int16_t *work = (int16_t *)(grad + wxp * wy);
+  const uint8_t *lp[BVB_LK_MAX_LEVELS], *ln[BVB_LK_MAX_LEVELS];
+  int32_t lw[BVB_LK_MAX_LEVELS], lh[BVB_LK_MAX_LEVELS], ls[BVB_LK_MAX_LEVELS];
+  for (int32_t l = 0; l < levels; ++l) {
+    lw[l] = width >> l;
+    lh[l] = height >> l;
+    ls[l] = l == 0 ? stride : BVB_LK_LEVEL_STRIDE(lw[l]);
+    const uint32_t off = bvb_lk_level_offset(width, height, l);
+    lp[l] = l == 0 ? prev : prev_pyr + off;
+    ln[l] = l == 0 ? next : next_pyr + off;
+  }
+  int32_t pa[BVB_LK_PA_WORDS], it[BVB_LK_IT_WORDS];
+  for (int32_t f = 0; f < params->count; ++f) {
+    const int32_t px = in[2 * f], py = in[2 * f + 1];
+    int32_t gx = 0, gy = 0, status = BVB_LK_TRACKED, iters = 0, qx = px, qy = py;
+    it[BVB_LK_IT_BX] = it[BVB_LK_IT_BY] = 0;
+    for (int32_t l = levels - 1; l >= 0; --l) {
+      const int32_t tx = ((px + 32768) >> l) - 32768, ty = ((py + 32768) >> l) - 32768;
+      const int32_t t7x = (tx + 256) >> 9, t7y = (ty + 256) >> 9;
+      const int32_t fits = inside(t7x, t7y, hx, hy, lw[l], lh[l], 1);
+      int32_t usable = 0;
+      if (fits) {
+        pa[BVB_LK_PA_STRIDE] = ls[l];
+        pa[BVB_LK_PA_IX] = t7x >> 7;
+        pa[BVB_LK_PA_IY] = t7y >> 7;
+        pa[BVB_LK_PA_FX] = t7x & 127;
+        pa[BVB_LK_PA_FY] = t7y & 127;
+        pa[BVB_LK_PA_HX] = hx;
+        pa[BVB_LK_PA_HY] = hy;
+        ops->patch(lp[l], tmpl, grad, work, pa);
+        usable = setup_solve(pa, npix, params->min_det, it);
+      }
+      if (!usable) {
+        if (l > 0) {
+          gx *= 2;
+          gy *= 2;
+          continue;
+        }
+        status = fits ? BVB_LK_FLAT : BVB_LK_LEFT;
+        qx = px;
+        qy = py;
+        break;
+      }
+      it[BVB_LK_IT_STRIDE] = ls[l];
+      it[BVB_LK_IT_WIDTH] = lw[l];
+      it[BVB_LK_IT_HEIGHT] = lh[l];
+      it[BVB_LK_IT_HX] = hx;
+      it[BVB_LK_IT_HY] = hy;
+      it[BVB_LK_IT_MAXITER] = params->max_iter;
+      it[BVB_LK_IT_EPS] = params->eps_q16;
+      it[BVB_LK_IT_FIXED] = params->flags & BVB_LK_FIXED_ITER;
+      it[BVB_LK_IT_QX] = tx + gx;
+      it[BVB_LK_IT_QY] = ty + gy;
+      const int32_t st = ops->iterate(ln[l], tmpl, grad, work, it);
+      iters += it[BVB_LK_IT_ITERS];
+      qx = it[BVB_LK_IT_QX];
+      qy = it[BVB_LK_IT_QY];
+      if (st == BVB_LK_LEFT) {
+        status = BVB_LK_LEFT;
+        break;
+      }
+      if (l > 0) {
+        gx = 2 * (qx - tx);
+        gy = 2 * (qy - ty);
+      } else if (!inside((qx + 256) >> 9, (qy + 256) >> 9, hx, hy, lw[0], lh[0], 0)) {
+        status = BVB_LK_LEFT;
+      } else {
+        status = st;
+      }
+    }
+    int32_t *o = out + BVB_LK_OUT_WORDS * f;
+    o[0] = qx;
+    o[1] = qy;
+    o[2] = status;
+    o[3] = iters;
+    o[4] = it[BVB_LK_IT_BX];
+    o[5] = it[BVB_LK_IT_BY];
+  }
+}
+
+void bvb_lk_track_c(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_t *next,
+                    const uint8_t *next_pyr, int32_t width, int32_t height, int32_t stride,
+                    const struct bvb_lk_params *params, const int32_t *in, int32_t *out,
+                    void *scratch) {
+  static const struct bvb_lk_ops c_ops = {bvb_lk_patch_c, bvb_lk_iterate_c};
+  bvb_lk_track_run(prev, prev_pyr, next, next_pyr, width, height, stride, params, in, out, scratch,
+                   &c_ops);
+}

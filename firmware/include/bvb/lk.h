@@ -1,0 +1,177 @@
+/* Pyramidal Lucas-Kanade feature tracking in fixed point (Bouguet's iterative scheme: for every
+ * feature and pyramid level, the spatial gradient matrix G of the template window and, per
+ * iteration, the mismatch vector b of the interpolated window in the next frame; the update
+ * eta = G^-1 b is the least-squares solution of the seed paper's equation 6).
+ *
+ * PYRAMID (bvb_lk_pyramid): level l+1 is level l downsampled by 2x2 box averaging with rounding,
+ *   L_{l+1}(x, y) = (L_l(2x,2y) + L_l(2x+1,2y) + L_l(2x,2y+1) + L_l(2x+1,2y+1) + 2) >> 2,
+ *   w_{l+1} = w_l >> 1, h_{l+1} = h_l >> 1 (an odd last row or column is dropped). Level 0 is the
+ *   frame itself; levels 1 .. levels-1 are packed in one buffer: level l at byte offset
+ *   BVB_LK_LEVEL_OFFSET, rows of BVB_LK_LEVEL_STRIDE(w_l) = (w_l + 3) & ~3 bytes (the padding
+ *   bytes are not written). A level-l pixel covers level-0 pixels 2^l x .. 2^l x + 2^l - 1, so the
+ *   level-l coordinate of a level-0 point p is (p + 1/2) / 2^l - 1/2.
+ *
+ * TRACKING (bvb_lk_track), per feature, from the coarsest level to level 0:
+ *   Positions are Q16 pixels (int32; pixel centres at integers). At level L the template sits at
+ *   pL = ((p0 + 32768) >> L) - 32768 and the search at pL + g, g the guess carried from the level
+ *   above (doubled), 0 at the coarsest.
+ *   Bilinear interpolation at a Q16 position q: q7 = (q + 256) >> 9 (round to 1/128 px),
+ *   i = q7 >> 7, f = q7 & 127; with wx0 = 128 - fx, wx1 = fx (likewise y):
+ *     h(x, y) = wx0 I(x, y) + wx1 I(x+1, y)                    [Q7, <= 32640]
+ *     v(x, y) = wy0 h(x, y) + wy1 h(x, y+1)                    [Q14, <= 4177920]
+ *     value = v >> 9                                           [Q5, truncated, <= 8160]
+ *   Template T (frame I, level L) on (wx+2) x (wy+2) samples around the template position;
+ *   gradients on the wx x wy window, central differences of T (twice the derivative, Q5):
+ *     Ix = T(i+1, j) - T(i-1, j), Iy = T(i, j+1) - T(i, j-1)   [-8160, 8160]
+ *   Structure tensor, exact sums >> 4 (floor; |.| < 2^30 for wx*wy <= 225):
+ *     gxx = (sum Ix^2) >> 4, gxy = (sum Ix Iy) >> 4, gyy = (sum Iy^2) >> 4
+ *   Flat window: gxx*gyy - gxy^2 < min_det * 65536 * (wx*wy)^2 (int64): the determinant of the
+ *   mean tensor of the derivatives below min_det, in (grey levels per pixel)^4.
+ *   The inverse, once per level: s = bitlen(max(gxx, gyy)) - 15; a, d, c = gxx, gyy, gxy
+ *   shifted by s (right, floor; left when s < 0), c clamped to +-32767; D = a*d - c*c (int32,
+ *   < 2^30), D <= 0 is flat too; u = bitlen(D) - 15, Dn = D shifted by u, R = 2^28 / Dn
+ *   (integer division, in (2^13, 2^14]); M = ((d*R) >> 15, (-c*R) >> 15, (a*R) >> 15) (int16)
+ *   and S = s + u - 4, so that G^-1 ~ M 2^-(S+17) in the units below.
+ *   Each iteration at q (Q16, level L, frame J): the window must be inside: i - hx >= 0,
+ *   i + hx + 1 <= w_L - 1 (likewise y), else the feature has left the image. Then
+ *     dI = T(i, j) - J(q + (i, j))                             [-8160, 8160]
+ *     bx = (sum dI Ix) >> 4, by = (sum dI Iy) >> 4             (exact sums, floor)
+ *     t = max(0, 16 - min(signbits(bx), signbits(by)));  bx', by' = bx >> t, by >> t (int16)
+ *     Px = Mxx bx' + Mxy by', Py = Mxy bx' + Myy by'           (int32)
+ *     eta = P shifted right by S - t (floor; left when negative), clamped to +-2^22 (64 px)
+ *     q += eta; converged when |eta_x| <= eps and |eta_y| <= eps.
+ *   signbits(v) is the Blackfin's: the number of bits below the sign bit that equal it (0..31).
+ *   Unless BVB_LK_FIXED_ITER, a level stops at convergence; with it every level runs max_iter
+ *   iterations and the convergence test applies to the last update only.
+ *   Levels where the template does not fit (i - hx - 1 >= 0, i + hx + 2 <= w_L - 1, likewise y)
+ *   or the window is flat are skipped (the guess is doubled and passed on) except level 0,
+ *   where the feature is lost. After level 0 the final position must be inside too.
+ * Status: BVB_LK_TRACKED, BVB_LK_LEFT (the window left the image, or the feature's own window
+ * at level 0 does not fit in the first frame), BVB_LK_FLAT, BVB_LK_NOT_CONVERGED (the level-0
+ * iterations ran out).
+ *
+ * Arguments of bvb_lk_track: prev, next: level 0 of both frames (width x height, stride bytes
+ * between rows, no alignment required); prev_pyr, next_pyr: their levels 1 .. levels-1 as
+ * bvb_lk_pyramid writes them (ignored when levels = 1; 4-byte aligned); params: struct
+ * bvb_lk_params; in: 2 int32 per feature (x, y, Q16, level 0 of prev); out: BVB_LK_OUT_WORDS
+ * int32 per feature (x, y in Q16 in next, status, iterations summed over the levels, and the
+ * last iteration's bx, by); scratch: BVB_LK_SCRATCH_BYTES, 4-byte aligned, any contents.
+ * width, height >= 1. */
+#ifndef BVB_LK_H
+#define BVB_LK_H
+
+#define BVB_LK_MAX_LEVELS 5
+#define BVB_LK_MAX_HALF 7          /* windows up to 15 x 15 */
+#define BVB_LK_FIXED_ITER 1        /* params.flags */
+
+#define BVB_LK_TRACKED 0
+#define BVB_LK_LEFT 1
+#define BVB_LK_FLAT 2
+#define BVB_LK_NOT_CONVERGED 3
+
+#define BVB_LK_OUT_WORDS 6
+#define BVB_LK_SCRATCH_BYTES 4096
+
+#define BVB_LK_LEVEL_STRIDE(w) (((w) + 3) & ~3)
+
+/* The iteration block (int32 words) shared by the C and assembly iteration steps. */
+#define BVB_LK_IT_STRIDE 0
+#define BVB_LK_IT_WIDTH 1
+#define BVB_LK_IT_HEIGHT 2
+#define BVB_LK_IT_HX 3
+#define BVB_LK_IT_HY 4
+#define BVB_LK_IT_MXX 5
+#define BVB_LK_IT_MXY 6
+#define BVB_LK_IT_MYY 7
+#define BVB_LK_IT_SHIFT 8
+#define BVB_LK_IT_MAXITER 9
+#define BVB_LK_IT_EPS 10
+#define BVB_LK_IT_FIXED 11
+#define BVB_LK_IT_QX 12            /* in and out */
+#define BVB_LK_IT_QY 13
+#define BVB_LK_IT_ITERS 14         /* out */
+#define BVB_LK_IT_BX 15            /* out */
+#define BVB_LK_IT_BY 16
+#define BVB_LK_IT_WORDS 17
+
+/* The patch block (int32 words). */
+#define BVB_LK_PA_STRIDE 0
+#define BVB_LK_PA_IX 1
+#define BVB_LK_PA_IY 2
+#define BVB_LK_PA_FX 3
+#define BVB_LK_PA_FY 4
+#define BVB_LK_PA_HX 5
+#define BVB_LK_PA_HY 6
+#define BVB_LK_PA_GXX 7            /* out */
+#define BVB_LK_PA_GXY 8
+#define BVB_LK_PA_GYY 9
+#define BVB_LK_PA_WORDS 10
+
+#ifndef __ASSEMBLER__
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+struct bvb_lk_params {
+  int32_t levels;    /* 1 .. BVB_LK_MAX_LEVELS; 1 = no pyramid */
+  int32_t win_w;     /* odd, 3 .. 15 */
+  int32_t win_h;     /* odd, 3 .. 15 */
+  int32_t max_iter;  /* per level, 1 .. 100 */
+  int32_t eps_q16;   /* >= 0 */
+  int32_t min_det;   /* 0 .. 2^20 */
+  int32_t flags;     /* BVB_LK_FIXED_ITER */
+  int32_t count;     /* features, >= 0 */
+};
+
+/* Bytes of the packed levels 1 .. levels-1 of a width x height frame, and where level l starts. */
+uint32_t bvb_lk_pyramid_bytes(int32_t width, int32_t height, int32_t levels);
+uint32_t bvb_lk_level_offset(int32_t width, int32_t height, int32_t level);
+
+void bvb_lk_pyramid_c(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
+                      int32_t levels, uint8_t *pyr);
+void bvb_lk_pyramid_asm(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
+                        int32_t levels, uint8_t *pyr);
+
+void bvb_lk_track_c(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_t *next,
+                    const uint8_t *next_pyr, int32_t width, int32_t height, int32_t stride,
+                    const struct bvb_lk_params *params, const int32_t *in, int32_t *out,
+                    void *scratch);
+void bvb_lk_track_asm(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_t *next,
+                      const uint8_t *next_pyr, int32_t width, int32_t height, int32_t stride,
+                      const struct bvb_lk_params *params, const int32_t *in, int32_t *out,
+                      void *scratch);
+
+/* The two inner steps, in C and in assembly, and the driver that runs them (bvb_lk_track_c and
+ * bvb_lk_track_asm are the driver with one set or the other).
+ * patch: the template, gradients and structure tensor of one level (block BVB_LK_PA_*): tmpl gets
+ * T on the window (int16, rows of wx + 1, the last column 0), grad the words Ix | Iy << 16 (same
+ * layout, the last column 0); work holds the extended template.
+ * iterate: the iterations of one level (block BVB_LK_IT_*); returns BVB_LK_TRACKED (converged),
+ * BVB_LK_NOT_CONVERGED or BVB_LK_LEFT. */
+typedef void (*bvb_lk_patch_fn)(const uint8_t *img, int16_t *tmpl, int32_t *grad, int16_t *work,
+                                int32_t *block);
+typedef int32_t (*bvb_lk_iterate_fn)(const uint8_t *img, const int16_t *tmpl, const int32_t *grad,
+                                     int16_t *work, int32_t *block);
+void bvb_lk_patch_c(const uint8_t *img, int16_t *tmpl, int32_t *grad, int16_t *work, int32_t *block);
+void bvb_lk_patch_asm(const uint8_t *img, int16_t *tmpl, int32_t *grad, int16_t *work, int32_t *block);
+int32_t bvb_lk_iterate_c(const uint8_t *img, const int16_t *tmpl, const int32_t *grad, int16_t *work,
+                         int32_t *block);
+int32_t bvb_lk_iterate_asm(const uint8_t *img, const int16_t *tmpl, const int32_t *grad,
+                           int16_t *work, int32_t *block);
+struct bvb_lk_ops {
+  bvb_lk_patch_fn patch;
+  bvb_lk_iterate_fn iterate;
+};
+void bvb_lk_track_run(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_t *next,
+                      const uint8_t *next_pyr, int32_t width, int32_t height, int32_t stride,
+                      const struct bvb_lk_params *params, const int32_t *in, int32_t *out,
+                      void *scratch, const struct bvb_lk_ops *ops);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* __ASSEMBLER__ */
+
+#endif
