@@ -1,0 +1,184 @@
+/* Visual odometry pipeline (the seed paper's section 2.2), one call per camera frame, all fixed
+ * point: rotation from the scan-line intensity profile shift, translation from floor features
+ * tracked by Lucas-Kanade or matched by NCC, optionally fused with the wheel encoders; the pose
+ * is accumulated in the state buffer from one frame to the next.
+ *
+ * UNITS. Positions Q16 inches, angles Q16 degrees (65536 = 1 degree), image coordinates Q8
+ * pixels unless a field says otherwise. World and camera conventions are the scene generator's
+ * (harness/scene/camera.h): heading counter-clockwise from +x, left turns positive; image x
+ * right, y down, pixel centres at integers; the camera on the robot's centre line cam_offset
+ * ahead of the axle centre, cam_height above the floor, tilted down by tilt, no roll.
+ *
+ * ROTATION (equations 3 to 5 of the seed). The column profile of a band of rows
+ * (bvb/scanline.h: mean of each column over band_rows rows from band_y0) is compared with the
+ * previous frame's over a window of win_w columns from win_x0, minimum overlap rho: the integer
+ * shift t minimising the mean absolute difference f(t) = S(t) / (win_w - |t|); t > 0 when the
+ * scene moved right, i.e. the robot turned left. Sub-pixel: f at t-1, t, t+1 (exact quotients in
+ * Q8) and a parabola through them, delta = (f(t-1) - f(t+1)) / (2 (f(t-1) - 2 f(t) + f(t+1))),
+ * |delta| <= 1/2 because f(t) is the minimum; the shift s = t + delta in Q8 pixels (no
+ * sub-pixel step when t is at the end of the search range or the curvature is 0).
+ *   From shift to angle. A turn by dtheta about the vertical axis moves the image point with
+ *   normalised coordinates (xn, yn) = ((x - cx) / fx, (y - cy) / fy) horizontally by, to first
+ *   order, du = fx dtheta ((1 + xn^2) cos(tilt) - yn sin(tilt)) pixels (the rotational flow of a
+ *   camera rotating about the axis (0, -cos tilt, -sin tilt) of its own frame); it does not
+ *   depend on depth, so the whole band moves together. Averaged over the band's centre row yc
+ *   and the window's columns (mean of xn^2 over them: m2 = ((xm - cx)^2 + (win_w^2 - 1) / 12) /
+ *   fx^2, xm the window's centre column), the shift is s = G tan(dtheta) with the gain
+ *     G = fx ((1 + m2) cos(tilt) - yc sin(tilt))   (pixels per radian),
+ *   and dtheta = atan(s / G), by CORDIC (below). For an untilted camera and a window reduced to
+ *   the centre column this is the familiar atan(s / fx); the small-angle form s * HFOV / width
+ *   differs from it by the tangent's curvature and is not used. The tangent makes the formula
+ *   exact at the image centre on the horizon row (x = cx + fx tan(phi) / cos(tilt) there).
+ *   Numbers at 160x120 (fx = 140, tilt 10 deg, band rows 20..51, window 8..151): yc = -0.166,
+ *   m2 = 0.088, G = 140 (1.088 x 0.985 + 0.166 x 0.174) = 154.1 px/rad = 2.69 px/deg, so the
+ *   simulator's 3 deg per frame turn is an 8.1 pixel shift.
+ *
+ * TRANSLATION. Harris corners (bvb/harris.h) of the previous frame in the floor region (image
+ * rows from floor_y0, where the ground plane is nearer than max_range) are tracked into this
+ * frame (tracker 0: pyramidal Lucas-Kanade, bvb/lk.h, Q16 positions; tracker 1: NCC matching,
+ * bvb/ncc.h, whole pixels, refined with a parabola through the NCC scores of the 3 x 3 offsets
+ * around the match when ncc_subpixel is set). Each point is put on the floor: the ray through
+ * (x, y) meets the plane z = 0 at
+ *   F = h (fy cos(tilt) - v sin(tilt)) / D + cam_offset   (ahead of the axle centre)
+ *   L = -h (x - cx) (fy / fx) / D                           (to the left)
+ *   D = fy sin(tilt) + v cos(tilt),  v = y - cy,  h = cam_height,
+ * valid below the horizon (D > 0; points with F beyond 2 max_range are dropped). With P the
+ * floor point seen in the previous frame and Q in this one (both in the robot's frame at the
+ * time), a static point obeys P - T = R(dtheta) Q for the robot's motion T, so T = P -
+ * R(dtheta) Q: the rotation is compensated with this frame's dtheta. Per point, the motion along
+ * the chord direction dtheta / 2, d = T . (cos dtheta/2, sin dtheta/2), and across it, e (zero
+ * for a wheeled robot). The estimate: the median of d; inliers are the points with |d - median|
+ * <= inlier_tol and |e| <= inlier_tol; the forward motion is the mean of the inliers' d
+ * (rounded to nearest). A static floor gives agreeing points; features on obstacles (not on
+ * the floor) or on a moving object do not.
+ *
+ * FUSION with the wheel encoders (fuse = 1; the seed's proposed remedy for a moving object in
+ * view). The encoders give, from the tick increments dl, dr since the previous frame, dfwd_enc
+ * = (dl + dr) / (2 tpi) and dtheta_enc = (dr - dl) / (tpi wheelbase) radians. This frame's
+ * rotation is the encoders' when |dtheta_vis - dtheta_enc| > fuse_rot_tol; its translation is
+ * the encoders' when fewer than min_inliers points agree or |dfwd_vis - dfwd_enc| >
+ * fuse_trans_tol. Otherwise vision is kept (it does not drift with wheel slip). Without fusion,
+ * a frame with fewer than min_inliers inliers has zero translation (the visual estimate is
+ * missing). The result's flags say which source each frame used.
+ *
+ * POSE. heading_mid = heading + dtheta / 2; x += dfwd cos(heading_mid); y += dfwd sin(
+ * heading_mid); heading += dtheta (not wrapped). Frame 0 (state->initialised == 0) sets the pose
+ * to (start_x, start_y, start_heading) and only stores the frame, the profile and the features.
+ *
+ * TRIGONOMETRY: CORDIC on Q16-degree angles, 22 iterations over a table of atan(2^-i) in Q16
+ * degrees (round(atan(2^-i) * 180 / pi * 65536); entries beyond 21 round to 0). Rotation mode
+ * gives cos and sin in Q30 (start vector K 2^30, K = prod 1 / sqrt(1 + 2^-2i) = 0.6072529350,
+ * round(K 2^30) = 652032874; angles reduced to [-90, 90] degrees first), error < 2^-27. Vectoring
+ * mode gives atan2(y, x) for x > 0 (inputs scaled to at most 2^28 first), error < 2 Q16 units
+ * (3e-5 degrees). Divisions: 64-bit integer division, truncating, by positive divisors.
+ *
+ * CALL. bvb_odometry_c and bvb_odometry_asm run the same C orchestration; the first calls the C
+ * kernels, the second (Blackfin only) the assembly ones where they exist (scan-line profile and
+ * shift, Harris response and NMS, LK pyramid and tracking, NCC matching and score map; Harris
+ * selection is C in both). Both give identical results.
+ *   frame: width x height bytes, stride between rows (the grey image; no alignment needed).
+ *   info: BVB_ODO_INFO_WORDS int32: frame index, cumulative left and right encoder ticks.
+ *   params: struct bvb_odo_params. state: bvb_odometry_state_bytes(params) bytes, 4-byte aligned,
+ *   zero before the first frame, then left alone between calls. result: BVB_ODO_RESULT_WORDS
+ *   int32 (BVB_ODO_R_*). scratch: bvb_odometry_scratch_bytes(params) bytes, 4-byte aligned, any
+ *   contents. Returns the number of features tracked into this frame (0 in frame 0), or -1 when
+ *   the parameters are out of range (nothing else written).
+ *   Limits: 16 <= width <= 1024, 16 <= height <= 1024, stride >= width; fx, fy >= 1 px; 1 <=
+ *   band_rows <= 256 inside the frame; 1 <= rho <= win_w inside the frame; 1 <= max_features <=
+ *   BVB_ODO_MAX_FEATURES; lk_levels 1..4, lk_win odd 3..15; ncc_radius 1..5, ncc_search 1..16;
+ *   tpi >= 1, wheelbase >= 1/16 in. */
+#ifndef BVB_PIPE_ODOMETRY_H
+#define BVB_PIPE_ODOMETRY_H
+
+#include <stdint.h>
+
+#define BVB_ODO_MAX_FEATURES 128
+
+#define BVB_ODO_TRACK_LK 0
+#define BVB_ODO_TRACK_NCC 1
+
+/* info words */
+#define BVB_ODO_INFO_FRAME 0
+#define BVB_ODO_INFO_LEFT 1
+#define BVB_ODO_INFO_RIGHT 2
+#define BVB_ODO_INFO_WORDS 3
+
+/* result words */
+#define BVB_ODO_R_X 0            /* pose after this frame, Q16 inches */
+#define BVB_ODO_R_Y 1
+#define BVB_ODO_R_HEADING 2      /* Q16 degrees, cumulative */
+#define BVB_ODO_R_DTHETA_VIS 3   /* this frame's rotation from the profile shift, Q16 degrees */
+#define BVB_ODO_R_DTHETA_ENC 4   /* ... from the encoders */
+#define BVB_ODO_R_DTHETA 5       /* ... used */
+#define BVB_ODO_R_DFWD_VIS 6     /* this frame's forward motion from the features, Q16 inches */
+#define BVB_ODO_R_DFWD_ENC 7     /* ... from the encoders */
+#define BVB_ODO_R_DFWD 8         /* ... used */
+#define BVB_ODO_R_SHIFT 9        /* profile shift, Q8 pixels */
+#define BVB_ODO_R_TRACKED 10     /* features tracked onto the floor */
+#define BVB_ODO_R_INLIERS 11
+#define BVB_ODO_R_FLAGS 12       /* BVB_ODO_F_* */
+#define BVB_ODO_R_DETECTED 13    /* features found in this frame for the next one */
+#define BVB_ODO_RESULT_WORDS 14
+
+#define BVB_ODO_F_ROT_ENC 1      /* rotation taken from the encoders */
+#define BVB_ODO_F_FWD_ENC 2      /* translation taken from the encoders */
+#define BVB_ODO_F_FWD_NONE 4     /* no visual translation (too few inliers) */
+#define BVB_ODO_F_ROT_WIN 8      /* ... because of the window test */
+
+struct bvb_odo_params {
+  int32_t width, height, stride;
+  int32_t fx, fy, cx, cy;          /* Q8 pixels */
+  int32_t cam_height;              /* Q16 inches */
+  int32_t tilt;                    /* Q16 degrees below the horizontal, -45..45 */
+  int32_t cam_offset;              /* Q16 inches */
+  int32_t start_x, start_y;        /* Q16 inches */
+  int32_t start_heading;           /* Q16 degrees */
+  /* rotation */
+  int32_t band_y0, band_rows;      /* rows of the profile band */
+  int32_t win_x0, win_w, rho;      /* columns compared, minimum overlap */
+  int32_t shift_fit;               /* sub-pixel step: 0 none, 1 parabola, 2 equiangular */
+  int32_t rot_bins;                /* 1: compare the profile in angle bins; 0: in columns */
+  int32_t key_shift, key_frames;   /* a new key profile after this shift (bins) or frames */
+  int32_t key_still;               /* ... or when the shift is below this (bins) */
+  /* translation */
+  int32_t tracker;                 /* BVB_ODO_TRACK_* */
+  int32_t max_range;               /* Q16 inches of floor ahead of the camera: sets floor_y0 */
+  int32_t max_features, min_distance, harris_threshold;
+  int32_t lk_levels, lk_win, lk_max_iter, lk_eps, lk_min_det;  /* bvb_lk_params */
+  int32_t ncc_radius, ncc_search, ncc_subpixel;
+  int32_t inlier_tol;              /* Q16 inches */
+  int32_t min_inliers;
+  /* encoders and fusion */
+  int32_t fuse;
+  int32_t tpi;                     /* Q8 ticks per inch of wheel travel */
+  int32_t wheelbase;               /* Q16 inches */
+  int32_t fuse_rot_tol;            /* Q16 degrees */
+  int32_t fuse_trans_tol;          /* Q16 inches */
+  int32_t fuse_window;             /* frames */
+};
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Bytes of state and scratch for these parameters (0 when they are out of range). */
+uint32_t bvb_odometry_state_bytes(const struct bvb_odo_params *p);
+uint32_t bvb_odometry_scratch_bytes(const struct bvb_odo_params *p);
+/* The first image row of the feature region (floor nearer than max_range), as the pipeline
+ * computes it; -1 when the parameters are out of range. */
+int32_t bvb_odometry_floor_y0(const struct bvb_odo_params *p);
+
+int32_t bvb_odometry_c(const uint8_t *frame, const int32_t *info, const struct bvb_odo_params *params,
+                       uint8_t *state, int32_t *result, void *scratch);
+int32_t bvb_odometry_asm(const uint8_t *frame, const int32_t *info, const struct bvb_odo_params *params,
+                         uint8_t *state, int32_t *result, void *scratch);
+
+/* The fixed-point trigonometry, exported for the host tests. */
+void bvb_odo_sincos(int32_t angle_q16deg, int32_t *cos_q30, int32_t *sin_q30);
+int32_t bvb_odo_atan2(int32_t y, int32_t x);  /* Q16 degrees; x > 0 */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
