@@ -159,7 +159,7 @@ TEST(LucasKanade, IterationCapIsFlagged) {
 TEST(LucasKanade, OneStepMatchesFloatingPointSolve) {
   const int w = 64, h = 48;
   auto a = frame(w, h, 0, 0), b = frame(w, h, 0.8, -0.3);
-  const int hx = 3, hy = 3, wx = 7, wy = 7, wxp = 8;
+  const int hx = 3, hy = 3, wy = 7, wxp = 8;  // a 7x7 window, rows padded to 8
   std::vector<int16_t> tmpl(wxp * wy), work(2048);
   std::vector<int32_t> grad(wxp * wy);
   int32_t pa[BVB_LK_PA_WORDS] = {};
@@ -224,6 +224,50 @@ TEST(LucasKanadePyramid, TwoByTwoAverageWithRounding) {
   int s = pyr[0] + pyr[1] + pyr[4] + pyr[5];
   EXPECT_EQ(pyr[8], (s + 2) / 4);
   EXPECT_EQ(bvb_lk_level_offset(w, h, 2), 8u);
+}
+
+}  // namespace
+
+// Real frames with ground truth: Harris corners of RubberWhale frame10 (the references of
+// bvb/harris.h) tracked into frame11 with three levels; compared with flow10.flo where it is
+// known.
+#include <algorithm>
+#include <sys/stat.h>
+
+#include "bvb/harris.h"
+#include "io.h"
+
+namespace {
+
+TEST(LucasKanadeRealFrames, RubberWhaleAgreesWithGroundTruth) {
+  const std::string dir = std::string(BVB_FRAMES_REAL) + "/RubberWhale/";
+  struct stat st;
+  if (stat((dir + "flow10.flo").c_str(), &st) != 0) GTEST_SKIP() << "no frames under " << dir;
+  bvb::Image a = bvb::read_pnm(dir + "frame10.pgm"), b = bvb::read_pnm(dir + "frame11.pgm");
+  bvb::FlowField gt = bvb::read_flo(dir + "flow10.flo");
+  const int w = a.width, h = a.height;
+  std::vector<int32_t> resp(size_t(w) * h);
+  std::vector<uint8_t> hs(BVB_HARRIS_SCRATCH_BYTES(w));
+  bvb_harris_response_c(a.data.data(), resp.data(), w, h, w, w, hs.data());
+  const int32_t maxv = *std::max_element(resp.begin(), resp.end());
+  std::vector<int32_t> cand(size_t(BVB_HARRIS_NMS_CAPACITY(w, h) + 1) * 2), corners(3 * 100);
+  int32_t n = 0;
+  bvb_harris_nms_c(resp.data(), w, h, w, maxv / 100, cand.data(), &n, nullptr);
+  const int32_t taken = bvb_harris_select_c(cand.data(), n, 100, 10, corners.data());
+  ASSERT_EQ(taken, 100);
+  std::vector<std::pair<double, double>> pts;
+  for (int k = 0; k < taken; ++k) pts.push_back({double(corners[3 * k]), double(corners[3 * k + 1])});
+  auto r = track(a.data, b.data, w, h, pts, defaults(3));
+  std::vector<double> err;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    const size_t at = size_t(pts[i].second) * w + size_t(pts[i].first);
+    if (bvb::FlowField::unknown(gt.u[at]) || r[i].status != BVB_LK_TRACKED) continue;
+    err.push_back(std::hypot(r[i].x - pts[i].first - gt.u[at], r[i].y - pts[i].second - gt.v[at]));
+  }
+  ASSERT_GT(err.size(), 80u);  // most corners tracked
+  std::sort(err.begin(), err.end());
+  EXPECT_LT(err[err.size() / 2], 0.1);        // median endpoint error
+  EXPECT_LT(err[err.size() * 9 / 10], 0.5);   // 90th percentile (occlusions, motion boundaries)
 }
 
 }  // namespace

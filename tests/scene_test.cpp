@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -594,25 +593,13 @@ TEST(SceneRender, MoverMovesAndIsSeen) {
   EXPECT_THROW(SceneGenerator(parse_scene_spec("mover=arena"), load_arena(arena_path("boxes"))), InputError);
 }
 
-TEST(SceneRender, OddSizesAndTiming) {
+TEST(SceneRender, OddSizes) {
   const World w = load_arena(arena_path("boxes"));
   const RenderResult odd = render(w, w.start, Camera::standard(33, 17));
   EXPECT_EQ(odd.grey.width, 33);
   EXPECT_EQ(odd.grey.height, 17);
-  EXPECT_TRUE(odd.uyvy.empty());
-  const Camera cam = Camera::standard(160, 120);
-  const int n = 20;
-  const auto t0 = std::chrono::steady_clock::now();
-  size_t sink = 0;
-  for (int k = 0; k < n; ++k) {
-    Pose p = w.start;
-    p.heading_deg += 7 * k;
-    sink += render(w, p, cam).grey.data[k];
-  }
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / n;
-  RecordProperty("render_160x120_ms", std::to_string(ms));
-  std::printf("render 160x120: %.2f ms per frame (%zu)\n", ms, sink % 2);
-  EXPECT_LT(ms, 10.0);
+  EXPECT_EQ(odd.grey.data.size(), size_t(33 * 17));
+  EXPECT_TRUE(odd.uyvy.empty());  // UYVY needs an even width
 }
 
 TEST(SceneGenerator, ClosedLoopStopsAtObstaclesButWheelsTurn) {

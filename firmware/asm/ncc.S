@@ -1,16 +1,35 @@
 /* NCC matching (bvb/ncc.h) for the BF537.
  *
- * (cycle figures and the bound are in the comment block further down, next to the MAC loop)
+ * Cycles (bfbench bench: 32 points on a grid, r = 5 (11x11), s = 8 (289 candidates each), frame 2
+ * = frame 1 (uniform noise) moved by (3, -2) plus noise; simulator cycles per call):
+ *   160x120: 725,290 = 78.4 per candidate (C at -O2: 14,228,829 = 1538.6, 19.6x);
+ *   320x240 and 640x480: 78.5 per candidate (the work does not depend on the frame size).
+ * Lower bound: a candidate is 121 multiply-accumulates and the two MAC units do two a cycle, so
+ * 60.5 cycles per candidate (its loads, 121 data words and 61 template words per pair of
+ * candidates, fit in the same cycles). The MAC pass runs at that bound for the candidate pairs
+ * (121 cycles per pair) and at 67 cycles for each candidate of the last column: 61.2 cycles per
+ * candidate on average. The other 17 go to, per point (r = 5, s = 8): pass 1 ~1650 cycles,
+ * pass 2 ~790, template ~610, selection sweep ~570, exact v, score and threshold (isqrt,
+ * divisions) ~620, the copy program ~200, calls and taken branches ~500.
+ * Data dependence: the selection's threshold rejects almost every pair of candidates in three
+ * cycles on textured scenes. On smooth real scenes many windows correlate well with the
+ * template at many offsets, and each of those costs an exact comparison (~200 cycles): on the
+ * Middlebury pairs (RubberWhale, Grove2, Urban2, Dimetrodon, Hydrangea; 48 points, r = 5, s = 8)
+ * 256 to 391 cycles per candidate, 4 to 6 times faster than the C reference there.
+ * Working set: the scratch buffer, 11.1 KB for r = 5, s = 8 (L1 data bank A in the bench, frames
+ * in SDRAM, read once per point: a byte per pixel of the search area and of the template). The
+ * simulator models no stalls: on hardware the P-register loads of the copy program used as
+ * addresses 2 to 6 cycles later, and L1 sub-bank conflicts between the template and the pixel
+ * copies, add cycles.
  *
- * Per point the work is split into passes over a small working set in the scratch buffer:
+ * Per point the work is split into passes over the scratch buffer:
  *   template   T' = N*T - ST (16-bit), flat and with padded rows; vt = N*STT - ST^2
  *   build      the (2s+2r+1)^2 search area of frame 2 as 16-bit pixels, twice: He holds the
  *              pairs (I[2m], I[2m+1]) and Ho the pairs (I[2m+1], I[2m+2]), so that every pair of
- *              horizontally adjacent pixels is one aligned 32-bit load
- *   pass 1     column sums over 2r+1 rows, sliding down: SI per column (16-bit, two columns per
- *              register) and N*SII per column (the MACs, two columns at once)
- *   pass 2     window sums, sliding along each row of candidates, two rows of candidates at
- *              once: v = N*SII - SI^2 for every candidate, and its minimum vmin
+ *              horizontally adjacent pixels is one aligned 32-bit load. For r = 5, 5 <= s <= 10
+ *              the previous point's MAC pass has already copied it (see the copy program)
+ *   pass 1     column sums of the 2r x 2r sub-windows at even coordinates (I, n*I^2)
+ *   pass 2     a lower bound of the smallest window variance from those sub-windows
  *   MAC pass   num for every candidate: two horizontally adjacent candidates per dual MAC
  *              (A0 += T'*I[c], A1 += T'*I[c+1] with one 32-bit load of (I[c], I[c+1])), the
  *              last column alone with both MACs on one candidate
@@ -21,7 +40,10 @@
  *   score      the reported Q15 score of the winner (isqrt and division, once per point).
  * The result is the unique maximum of the total order of bvb/ncc.h, so it does not depend on
  * the order candidates are visited in or on the filter, which only skips exact comparisons
- * that cannot change the best. */
+ * that cannot change the best.
+ * Two rules of the machine this code keeps: the two halves of a dual MAC share their two source
+ * registers, and no parallel store reads a register its own instruction writes (the simulator
+ * stores the new value). */
 #define CTX_FRAME1 0
 #define CTX_FRAME2 4
 #define CTX_STRIDE 8
@@ -38,11 +60,13 @@
 #define CTX_TF 52     /* T' flat, N halfwords and a zero */
 #define CTX_TP 56     /* T' rows as (0, T'0, ..., T'2r): r+1 words each */
 #define CTX_CS2 60    /* 2r-row column sums of I at rows 2k: column c at CS2 + c*KSB, halfword k */
-#define CTX_NQ2 64    /* the same for floor(n*sum I^2 / 2^15), n = 4r^2 */
+#define CTX_NQ2 64    /* the same for 2*n*sum I^2 (32-bit, exact), n = 4r^2: column c at NQ2 + 2c*KSB */
 #define CTX_NP 72     /* num of candidate pairs: (p*(2s+1) + d)*8, lanes e = 2p, 2p+1 */
 #define CTX_NS 76     /* num of the last column, e = 2s: word d */
 #define CTX_KSB 80    /* 2*KS, KS = s+2 rounded up to even (row k = s+1 repeats k = s) */
 #define CTX_NSUB 84   /* n = 4r^2 */
+#define CTX_DSH 88    /* 2n = 2^DSH * odd: the shift and */
+#define CTX_DINV 156  /* the inverse of odd mod 2^32, to divide exact multiples of 2n */
 #define CTX_X 92
 #define CTX_Y 96
 #define CTX_VT 100
@@ -88,7 +112,8 @@
 #define CTX_RECIP 264 /* ceil(2^16 / (2s+1)) */
 #define CTX_NCH 268   /* chunks of the copy program that are real */
 #define CTX_DUMMY 272 /* 36 bytes: where the program's idle chunks write */
-#define CTX_SIZE 320
+#define CTX_SEGB 320  /* the selection sweep's pairs before the seed's column pair */
+#define CTX_SIZE 336
 #define CHUNK 18      /* pixels per chunk of the copy program */
 
 #define MAX_RADIUS 5
@@ -310,7 +335,34 @@ _ncc_layout:
 	r7 = r7 + r6;
 	[p5 + CTX_NQ2] = r7;
 	r7 = r7 + r6;
+	r7 = r7 + r6;
 	r7 += 8;             /* two words for the pipeline's first (empty) stores */
+	/* 2n = 8r^2 = 2^(3 + 2*trailing zeros of r) * odd^2: the shift, and the odd part's inverse
+	 * mod 2^32 by Newton (x <- x*(2 - a*x) doubles the correct low bits; a*a = 1 mod 8) */
+	r0 = [p5 + CTX_R];
+	r1 = 3;
+	cc = bittst(r0, 0);
+	if cc jump .Ll_odd;
+	r0 >>= 1;            /* r = 2 or 4 */
+	r1 = 5;
+	cc = bittst(r0, 0);
+	if cc jump .Ll_odd;
+	r0 >>= 1;
+	r1 = 7;
+.Ll_odd:
+	[p5 + CTX_DSH] = r1;
+	r0 *= r0;            /* the odd part */
+	r1 = r0;             /* x */
+	p0 = 4;
+	lsetup (.Ll_n0, .Ll_n1) lc0 = p0;
+.Ll_n0:
+	r2 = r0;
+	r2 *= r1;
+	r3 = 2;
+	r3 = r3 - r2;
+.Ll_n1:
+	r1 *= r3;
+	[p5 + CTX_DINV] = r1;
 	[p5 + CTX_NP] = r7;
 	r6 = r4 << 1;
 	r6 += 1;
@@ -323,6 +375,7 @@ _ncc_layout:
 	r6 += 2;
 	r6 = r6 << 2;
 	r7 = r7 + r6;        /* end of the numerators */
+
 	/* ceil(2^16 / (2s+1)) */
 	r0 = r4 << 1;
 	r0 += 1;
@@ -607,9 +660,9 @@ _ncc_build:
  *     u = n*sum I^2 - (sum I)^2 = n*sum (I - Isub)^2  <=  n*sum over the window (I - I)^2  <=  v,
  * so the smallest u bounds the smallest v from below. Pass 1 makes the sub-windows' column sums:
  * for each pair of columns (2m, 2m+1) of He, sums over 2r rows starting at the even rows 2k
- * (k = 0..s), sliding down two rows a step: I in 16-bit lanes into CS2, n*I^2 (fractional MACs,
- * truncated to the high half: floor(n*sum I^2 / 2^15)) into NQ2, both column-major so that pass
- * 2 loads rows (k, k+1) as one word. Eight cycles a step: for each of the two rows, the sum and
+ * (k = 0..s), sliding down two rows a step: I in 16-bit lanes into CS2, n*I^2 (fractional MACs:
+ * 2*n*sum I^2, exact) into NQ2, both column-major (rows k, k+1 adjacent). Pass 2 reads the high
+ * halves of NQ2, floor(n*sum I^2 / 2^15); the exact sums serve _ncc_exactv. Eight cycles a step: for each of the two rows, the sum and
  * difference of the entering and leaving pixels, n*difference, the MAC of it by the sum
  * (= n*(new^2 - old^2)), and the I sums. */
 	.align 4
@@ -626,11 +679,11 @@ _ncc_pass1:
 	m2 = r1;             /* I0 back from row 2s+1 to the next column pair's row 0 */
 	r0 = [p5 + CTX_S];
 	r0 += 2;
-	r0 = r0 << 1;        /* 2*(s+2) bytes written a column */
+	r0 = r0 << 1;        /* 2*(s+2) bytes written a CS column (twice that a NQ column) */
 	r1 = [p5 + CTX_KSB];
 	r1 = r1 << 1;
 	r1 = r1 - r0;
-	m1 = r1;             /* from the end of what was written to column 2m+2 */
+	m1 = r1;             /* from the end of what was written to column 2m+2 (NQ: twice) */
 	p3 = r1;
 	r0 = [p5 + CTX_R];
 	r0 = r0 << 1;
@@ -642,6 +695,7 @@ _ncc_pass1:
 	r0 = r0 + r1;
 	i2 = r0;
 	r0 = p2;
+	r0 = r0 + r1;
 	r0 = r0 + r1;
 	i3 = r0;
 	r0 = [p5 + CTX_HE];
@@ -658,34 +712,36 @@ _ncc_pass1:
 	lsetup (.Lp1_i0, .Lp1_i1) lc0 = p0;
 .Lp1_i0:
 	r6 = r6 +|+ r1;
-	r3.h = r1.h * r7.l, r3.l = r1.l * r7.l (is);
+	r2.h = r1.h * r7.l, r2.l = r1.l * r7.l (is);
 .Lp1_i1:
-	r2.h = (a1 += r3.h * r1.h), r2.l = (a0 += r3.l * r1.l) (t) || r1 = [i1 ++ m0] || nop;
+	r3 = (a1 += r2.h * r1.h), r2 = (a0 += r2.l * r1.l) || r1 = [i1 ++ m0] || nop;
 	r0 = [i0 ++ m0];
 	lsetup (.Lp1_s0, .Lp1_s1) lc0 = p4;
 .Lp1_s0:
-	r4 = r1 +|+ r0, r5 = r1 -|- r0 || r0 = [i0 ++ m0] || w[p1++] = r6;
-	r3.h = r5.h * r7.l, r3.l = r5.l * r7.l (is) || r1 = [i1 ++ m0] || w[i2++] = r6.h;
-	a1 += r3.h * r4.h, a0 += r3.l * r4.l || w[p2++] = r2 || nop;
-	r6 = r6 +|+ r5 || w[i3++] = r2.h || nop;
+	r4 = r1 +|+ r0, r5 = r1 -|- r0 || r0 = [i0 ++ m0] || [p2++] = r2;
+	r2.h = r5.h * r7.l, r2.l = r5.l * r7.l (is) || r1 = [i1 ++ m0] || w[p1++] = r6;
+	a1 += r2.h * r4.h, a0 += r2.l * r4.l || w[i2++] = r6.h || nop;
+	r6 = r6 +|+ r5 || [i3++] = r3 || nop;
 	r4 = r1 +|+ r0, r5 = r1 -|- r0 || r0 = [i0 ++ m0] || nop;
-	r3.h = r5.h * r7.l, r3.l = r5.l * r7.l (is) || r1 = [i1 ++ m0] || nop;
+	r2.h = r5.h * r7.l, r2.l = r5.l * r7.l (is) || r1 = [i1 ++ m0] || nop;
 	r6 = r6 +|+ r5;
 .Lp1_s1:
-	r2.h = (a1 += r3.h * r4.h), r2.l = (a0 += r3.l * r4.l) (t);
+	r3 = (a1 += r2.h * r4.h), r2 = (a0 += r2.l * r4.l);
 	/* row k = s, and k = s+1 repeating it (read when s is even), then the next column pair */
-	w[p1++] = r6;
+	[p2++] = r2;
 	i0 -= m2;
-	w[i2++] = r6.h;
-	w[p2++] = r2;
-	w[i3++] = r2.h;
 	w[p1++] = r6;
 	w[i2++] = r6.h;
-	w[p2++] = r2;
-	w[i3++] = r2.h;
+	[i3++] = r3;
+	[p2++] = r2;
+	w[p1++] = r6;
+	w[i2++] = r6.h;
+	[i3++] = r3;
 	p1 = p1 + p3;
 	p2 = p2 + p3;
+	p2 = p2 + p3;
 	i2 += m1;
+	i3 += m1;
 .Lp1_c1:
 	i3 += m1;
 	rts;
@@ -700,60 +756,69 @@ _ncc_pass1:
 _ncc_pass2:
 	r0 = [p5 + CTX_KSB];
 	m0 = r0;
-	p4 = r0;
-	r1 = [p5 + CTX_S];
-	r1 += 1;
-	[p5 + CTX_T3] = r1;  /* s+1 sub-windows a row */
-	r1 = r1 << 1;
-	r1 *= r0;
-	r1 += -4;
-	m1 = r1;             /* from column 2s+2 back to column 0 of the next pair of rows */
-	p2 = r1;
+	r0 = r0 << 1;
+	p4 = r0;             /* NQ2 column stride */
 	r7.l = 0x7fff;
 	r7.h = 0x7fff;
 	r0 = [p5 + CTX_R];
 	r0 = r0 << 1;
-	p3 = r0;             /* 2r columns */
+	[p5 + CTX_T1] = r0;  /* 2r columns */
 	r0 = [p5 + CTX_S];
+	r1 = r0;
+	r1 += 1;
+	[p5 + CTX_T3] = r1;  /* s+1 sub-windows a row */
 	r0 += 2;
 	r0 >>= 1;
 	lc1 = r0;            /* pairs of rows (2j, 2j+1); with s even the last is (s, s+1 = s) */
 	r0 = [p5 + CTX_CS2];
-	i0 = r0;
-	p0 = [p5 + CTX_NQ2];
+	[p5 + CTX_T0] = r0;
+	r0 = [p5 + CTX_NQ2];
+	r0 += 2;             /* high halves */
+	[p5 + CTX_T2] = r0;
 	lsetup (.Lp2_0, .Lp2_1) lc1;
 .Lp2_0:
-	i1 = i0;
-	p1 = p0;
+	r0 = [p5 + CTX_T0];
+	i0 = r0;
+	i1 = r0;
+	r0 += 4;
+	[p5 + CTX_T0] = r0;
+	r0 = [p5 + CTX_T2];
+	p0 = r0;             /* entering column, row k */
+	p2 = r0;             /* leaving column, row k */
+	r1 = r0;
+	r1 += 4;
+	p1 = r1;             /* row k+1 */
+	p3 = r1;
+	r0 += 8;
+	[p5 + CTX_T2] = r0;
 	r4 = 0;
 	r5 = 0;
-	mnop || r1 = [p1 ++ p4] || r0 = [i1 ++ m0];
-	lsetup (.Lp2_i0, .Lp2_i1) lc0 = p3;
+	r0 = [p5 + CTX_T1];
+	lc0 = r0;
+	lsetup (.Lp2_i0, .Lp2_i1) lc0;
 .Lp2_i0:
-	r4 = r4 +|+ r0 || r0 = [i1 ++ m0] || nop;
+	mnop || r1.l = w[p0 ++ p4] || r0 = [i1 ++ m0];
+	r4 = r4 +|+ r0 || r1.h = w[p1 ++ p4] || nop;
 .Lp2_i1:
-	r5 = r5 +|+ r1 || r1 = [p1 ++ p4] || nop;
-	i1 -= m0;            /* back to column 2r, the first to enter */
-	p1 -= p4;
+	r5 = r5 +|+ r1;
 	r6 = [p5 + CTX_T3];
 	lc0 = r6;
 	lsetup (.Lp2_s0, .Lp2_s1) lc0;
 .Lp2_s0:
-	r3.h = r4.h * r4.h, r3.l = r4.l * r4.l || r0 = [i1 ++ m0] || r1 = [p1 ++ p4];
-	r3 = r5 -|- r3 || r2 = [i1 ++ m0] || r6 = [p1 ++ p4];
-	r7 = min(r7, r3) (v) || r3 = [i0 ++ m0] || nop;
-	r0 = r0 +|+ r2 || r2 = [i0 ++ m0] || nop;
-	r0 = r0 -|- r3 || r3 = [p0 ++ p4] || nop;
-	r0 = r0 -|- r2 || r2 = [p0 ++ p4] || nop;
-	r4 = r4 +|+ r0;
-	r1 = r1 +|+ r6;
+	r3.h = r4.h * r4.h, r3.l = r4.l * r4.l || r0 = [i1 ++ m0] || r1.l = w[p0 ++ p4];
+	r3 = r5 -|- r3 || r2 = [i1 ++ m0] || r1.h = w[p1 ++ p4];
+	r7 = min(r7, r3) (v) || r6.l = w[p0 ++ p4] || nop;
+	r0 = r0 +|+ r2 || r3 = [i0 ++ m0] || r6.h = w[p1 ++ p4];
+	r0 = r0 -|- r3 || r2 = [i0 ++ m0] || r3.l = w[p2 ++ p4];
+	r0 = r0 -|- r2 || r3.h = w[p3 ++ p4] || nop;
+	r4 = r4 +|+ r0 || r2.l = w[p2 ++ p4] || nop;
+	r1 = r1 +|+ r6 || r2.h = w[p3 ++ p4] || nop;
 	r1 = r1 -|- r3;
 	r1 = r1 -|- r2;
 .Lp2_s1:
 	r5 = r5 +|+ r1;
-	i0 -= m1;
 .Lp2_1:
-	p0 -= p2;
+	nop;
 	r0 = r7.l (x);
 	r1 = r7 >>> 16;
 	r0 = min(r0, r1);
@@ -1044,9 +1109,8 @@ _ncc_macpass:
 5:	jump.l _ncc_mac5;
 
 /* ------------------------------------------------------------------------------------------- */
-/* Helpers. _ncc_mul64: R1:R0 = R0 * R1 (unsigned 32 x 32 -> 64); clobbers R2-R5. */
-	.align 4
-_ncc_mul64:
+/* Helpers. MUL64: R1:R0 = R0 * R1 (unsigned 32 x 32 -> 64); clobbers R2-R5. */
+	.macro MUL64
 	r3 = r0.h * r1.h, r2 = r0.l * r1.l (fu);
 	r5 = r0.h * r1.l, r4 = r0.l * r1.h (fu);
 	r4 = r4 + r5 (ns);
@@ -1061,6 +1125,11 @@ _ncc_mul64:
 	cc = ac0;
 	r5 = cc;
 	r1 = r3 + r5;
+	.endm
+
+	.align 4
+_ncc_mul64:
+	MUL64
 	rts;
 
 /* _ncc_isqrt: R0 = floor(sqrt(R0)), bit by bit from the top: y + b is kept when (y + b)^2 <= x.
@@ -1145,7 +1214,7 @@ _ncc_compare:
 	[p5 + CTX_T1] = r3;  /* v_b */
 	[p5 + CTX_T2] = r2;  /* |num_b| */
 	r1 = r0;
-	call _ncc_mul64;     /* num_a^2 */
+	MUL64                /* num_a^2 */
 	r3 = [p5 + CTX_T1];
 	call .Lc_times;      /* (R2, R1, R0) = R1:R0 * R3 */
 	[p5 + CTX_T6] = r0;
@@ -1153,7 +1222,7 @@ _ncc_compare:
 	[p5 + CTX_T8] = r2;
 	r0 = [p5 + CTX_T2];
 	r1 = r0;
-	call _ncc_mul64;
+	MUL64
 	r3 = [p5 + CTX_T0];
 	call .Lc_times;
 	r3 = [p5 + CTX_T8];
@@ -1194,12 +1263,12 @@ _ncc_compare:
 	[p5 + CTX_T3] = r1;
 	[p5 + CTX_T4] = r3;
 	r1 = r3;
-	call _ncc_mul64;     /* lo * v */
+	MUL64                /* lo * v */
 	[p5 + CTX_T9] = r0;
 	[p5 + CTX_T10] = r1;
 	r0 = [p5 + CTX_T3];
 	r1 = [p5 + CTX_T4];
-	call _ncc_mul64;     /* hi * v */
+	MUL64                /* hi * v */
 	r2 = [p5 + CTX_T10];
 	r0 = r0 + r2 (ns);
 	cc = ac0;
@@ -1320,37 +1389,69 @@ _ncc_consider:
 .Lk_ret:
 	rts;
 
-/* _ncc_exactv: R0 = v = N*SII - SI^2 of candidate (e = R0, d = R1), exactly, from the 16-bit
- * pixels: per row r full words of He (e even) or Ho (e odd) and the low half of one more.
- * Clobbers R1-R6, P0-P2, A0-A1, both hardware loops. */
+/* _ncc_exactv: R0 = v = N*SII - SI^2 of candidate (e = R0, d = R1), exactly: its rows d..d+2r are
+ * the 2r-row block starting at the even row 2k in {d, d+1} (CS2, NQ2 over its 2r+1 columns) and
+ * one more row (d+2r or d), read from the 16-bit pixels (r full words of He or Ho and the low
+ * half of one more). NQ2 holds 2n*SII; 2n = 2^DSH * odd divides it exactly (shift, then multiply
+ * by odd's inverse mod 2^32). Clobbers R1-R7, P0-P2, A0-A1, LC1. */
 	.align 4
 _ncc_exactv:
+	[p5 + CTX_T5] = r0;
+	[p5 + CTX_T6] = r1;
+	r2 = r1;
+	r2 += 1;
+	r2 >>= 1;            /* k */
+	r3 = [p5 + CTX_KSB];
+	r4 = r3;
+	r4 *= r0;            /* e columns of CS2 */
+	r5 = r2 << 1;
+	r5 = r5 + r4;
+	r6 = [p5 + CTX_CS2];
+	r5 = r5 + r6;
+	p0 = r5;
+	r4 = r4 << 1;        /* of NQ2 */
+	r5 = r2 << 2;
+	r5 = r5 + r4;
+	r6 = [p5 + CTX_NQ2];
+	r5 = r5 + r6;
+	p1 = r5;
+	p2 = r3;             /* CS2 column stride; NQ2's is twice */
+	r4 = 0;
+	r5 = 0;
+	r6 = [p5 + CTX_WT];
+	lc1 = r6;
+	lsetup (.Lx_c0, .Lx_c1) lc1;
+.Lx_c0:
+	r6 = w[p0 ++ p2] (z);
+	r7 = [p1 ++ p2];
+	r4 = r4 + r6;
+.Lx_c1:
+	r5 = r5 + r7 (ns) || r7 = [p1 ++ p2] || nop;  /* (the second half of NQ2's stride) */
+	/* the extra row: d + 2r if d is even, else d */
+	r1 = [p5 + CTX_T6];
+	r0 = [p5 + CTX_T5];
+	r6 = [p5 + CTX_R];
+	r6 = r6 << 1;
+	cc = bittst(r1, 0);
+	r7 = 0;
+	if cc r6 = r7;
+	r1 = r1 + r6;        /* its row */
 	r2 = [p5 + CTX_HEROW];
 	r2 *= r1;
 	r3 = r0 << 1;
 	r2 = r2 + r3;
 	r3 = [p5 + CTX_HE];
-	r4 = [p5 + CTX_HO];
-	r4 += -2;
+	r6 = [p5 + CTX_HO];
+	r6 += -2;
 	cc = bittst(r0, 0);
-	if cc r3 = r4;
+	if cc r3 = r6;
 	r2 = r2 + r3;
 	p0 = r2;
-	r4 = [p5 + CTX_R];
-	p1 = r4;             /* full words a row */
-	r5 = r4 << 2;
-	r5 += 4;
-	r6 = [p5 + CTX_HEROW];
-	r6 = r6 - r5;
-	p2 = r6;             /* to the next row */
-	r5 = [p5 + CTX_WT];
-	lc1 = r5;
 	r6 = 0;
 	a1 = a0 = 0;
-	lsetup (.Lx_r0, .Lx_r1) lc1;
-.Lx_r0:
+	p1 = [p5 + CTX_R];
 	r1 = [p0++];
-	lsetup (.Lx_q0, .Lx_q1) lc0 = p1;
+	lsetup (.Lx_q0, .Lx_q1) lc1 = p1;
 .Lx_q0:
 	r6 = r6 +|+ r1;
 .Lx_q1:
@@ -1358,16 +1459,20 @@ _ncc_exactv:
 	r1 = r1.l (z);
 	r6 = r6 +|+ r1;
 	a0 += r1.l * r1.l (is);
-.Lx_r1:
-	p0 = p0 + p2;
+	r3 = a1 + a0, r2 = a1 - a0;  /* SII of the row */
 	r0 = r6.l (z);
 	r1 = r6 >> 16;
-	r0 = r0 + r1;        /* SI */
-	r3 = a1 + a0, r2 = a1 - a0;
-	r1 = [p5 + CTX_N];
-	r3 *= r1;
-	r0 = r0.l * r0.l (is);
-	r0 = r3 - r0;
+	r0 = r0 + r1;
+	r4 = r4 + r0;        /* SI */
+	r0 = [p5 + CTX_DSH];
+	r5 >>= r0;
+	r0 = [p5 + CTX_DINV];
+	r5 *= r0;            /* SII of the block */
+	r5 = r5 + r3;
+	r0 = [p5 + CTX_N];
+	r5 *= r0;
+	r4 = r4.l * r4.l (is);
+	r0 = r5 - r4;
 	rts;
 
 /* _ncc_num: R2 = num of candidate (e = R0, d = R1); clobbers R3, R4, P0. */
@@ -1442,19 +1547,31 @@ _ncc_select:
 	r5 = r5 + r0;
 	[p5 + CTX_BKEY] = r5;
 	call _ncc_tau;
-	/* every pair of the column pairs, in one loop: the flagged pair is two behind the loads */
+	/* every pair of the column pairs, in one loop per segment: first from the seed's column
+	 * pair to the last, then from the first to the seed's (a good best early keeps tau high);
+	 * the flagged pair is two behind the loads */
 	r0 = 8;
 	m0 = r0;
 	r0 = [p5 + CTX_NP];
 	[p5 + CTX_T15] = r0;
+	r2 = [p5 + CTX_S];
+	r1 = r2 << 1;
+	r1 += 1;             /* 2s+1 */
+	r4 = [p5 + CTX_BE];
+	r4 >>= 1;
+	r5 = r2;
+	r5 += -1;
+	r4 = min(r4, r5);
+	r4 *= r1;            /* the seed's column pair, its first pair */
+	[p5 + CTX_SEGB] = r4;
+	r1 *= r2;
+	r1 = r1 - r4;
+	p1 = r1;             /* pairs from there to the end */
+	r4 = r4 << 3;
+	r0 = r0 + r4;
 	i0 = r0;
 	r0 += 4;
 	i1 = r0;
-	r0 = [p5 + CTX_S];
-	r1 = r0 << 1;
-	r1 += 1;
-	r1 *= r0;
-	p1 = r1;             /* s*(2s+1) pairs */
 	r3 = [p5 + CTX_TAU];
 	mnop || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
 	cc = r3 < r3;
@@ -1464,6 +1581,27 @@ _ncc_select:
 .Ls_back:
 	r2 = max(r0, r1) || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
 .Ls_p1:
+	cc = r3 <= r2;
+	if !cc jump .Ls_segb (bp);
+	call .Ls_pair;
+.Ls_segb:
+	r1 = [p5 + CTX_SEGB];
+	cc = r1 == 0;
+	if cc jump .Ls_singles;
+	p1 = r1;             /* the pairs before the seed's column pair */
+	r0 = [p5 + CTX_NP];
+	i0 = r0;
+	r0 += 4;
+	i1 = r0;
+	r3 = [p5 + CTX_TAU];
+	mnop || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
+	cc = r3 < r3;
+	lsetup (.Ls_r0, .Ls_r1) lc0 = p1;
+.Ls_r0:
+	if cc jump .Ls_slowr;
+.Ls_backr:
+	r2 = max(r0, r1) || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
+.Ls_r1:
 	cc = r3 <= r2;
 	if !cc jump .Ls_singles (bp);
 	call .Ls_pair;
@@ -1497,18 +1635,15 @@ _ncc_select:
 .Ls_slow1:
 	call .Ls_single;
 	jump .Ls_back1;
+.Ls_slowr:
+	call .Ls_pair;
+	jump .Ls_backr;
 /* The flagged pair's index is (I0 - base) / 8 - 2; for the column pairs it is p*(2s+1) + d.
  * Keeps R0, R1, I0, I1, M0 and the sweep's loop registers; reloads R3 = tau. */
 .Ls_pair:
 	[--sp] = rets;
 	[--sp] = r0;
 	[--sp] = r1;
-	[--sp] = lc1;
-	[--sp] = lt1;
-	[--sp] = lb1;
-	[--sp] = lc0;
-	[--sp] = lt0;
-	[--sp] = lb0;
 	r0 = i0;
 	r5 = [p5 + CTX_T15];
 	r0 = r0 - r5;
@@ -1546,12 +1681,6 @@ _ncc_select:
 	[--sp] = rets;
 	[--sp] = r0;
 	[--sp] = r1;
-	[--sp] = lc1;
-	[--sp] = lt1;
-	[--sp] = lb1;
-	[--sp] = lc0;
-	[--sp] = lt0;
-	[--sp] = lb0;
 	r4 = i0;
 	r5 = [p5 + CTX_T15];
 	r4 = r4 - r5;
@@ -1578,12 +1707,6 @@ _ncc_select:
 	r2 = [p5 + CTX_T18];
 	call _ncc_consider;
 .Ls_ret:
-	lb0 = [sp++];
-	lt0 = [sp++];
-	lc0 = [sp++];
-	lb1 = [sp++];
-	lt1 = [sp++];
-	lc1 = [sp++];
 	r1 = [sp++];
 	r0 = [sp++];
 	r3 = [p5 + CTX_TAU];
@@ -1733,6 +1856,7 @@ _bvb_ncc_scoremap_asm:
 	cc = r0 == 0;
 	if cc jump .Lsm_zero;
 	call _ncc_build;
+	call _ncc_pass1;     /* the column sums _ncc_exactv reads */
 	call _ncc_macpass;
 	r0 = 0;
 	[p5 + CTX_T16] = r0;  /* d */
@@ -1791,3 +1915,4 @@ _bvb_ncc_scoremap_asm:
 	rets = [sp++];
 	rts;
 	.size _bvb_ncc_scoremap_asm, . - _bvb_ncc_scoremap_asm
+

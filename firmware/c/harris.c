@@ -89,7 +89,7 @@ static void pop(int32_t *h, int32_t n) {
   const int32_t lk = h[2 * (n - 1)], lr = h[2 * (n - 1) + 1];
   --n;
   h[2 * n] = 0x7FFFFFFF;
-  h[2 * n + 1] = (int32_t)0x80000000;
+  h[2 * n + 1] = INT32_MIN;
   int32_t i = 0;
   for (;;) {
     int32_t c = 2 * i + 1;
@@ -118,7 +118,7 @@ static void pop(int32_t *h, int32_t n) {
 int32_t bvb_harris_select_c(int32_t *cand, int32_t n, int32_t max_corners, int32_t min_distance,
                             int32_t *corners) {
   cand[2 * n] = 0x7FFFFFFF;
-  cand[2 * n + 1] = (int32_t)0x80000000;
+  cand[2 * n + 1] = INT32_MIN;
   for (int32_t i = n / 2 - 1; i >= 0; --i) sift_down(cand, n, i);
   const int32_t d2 = min_distance * min_distance;
   int32_t taken = 0;

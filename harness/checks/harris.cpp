@@ -18,26 +18,6 @@
 namespace bvb {
 namespace {
 
-const uint32_t kPlaces[] = {BVB_PLACE_SDRAM, BVB_PLACE_L1A, BVB_PLACE_L1B, BVB_PLACE_SCRATCH};
-
-size_t room(uint32_t place) {
-  return place == BVB_PLACE_SCRATCH ? 4096u : place == BVB_PLACE_L1B ? 24576u : 32768u;
-}
-
-// Puts each buffer in `place` when it fits there (with what is already there), else in SDRAM.
-void place_buffers(CheckCall &c, uint32_t place) {
-  size_t used = 0;
-  for (auto &b : c.bufs) {
-    const size_t need = b.data.size() + 2 * b.guard + b.align + 8;
-    if (used + need <= room(place)) {
-      b.place = place;
-      used += need;
-    } else {
-      b.place = BVB_PLACE_SDRAM;
-    }
-  }
-}
-
 std::vector<uint8_t> as_bytes(const std::vector<int32_t> &v) {
   std::vector<uint8_t> b(v.size() * 4);
   std::memcpy(b.data(), v.data(), b.size());
@@ -92,7 +72,7 @@ CheckCall nms_call(int w, int h, int stride, std::vector<int32_t> resp, int32_t 
   int is = c.scratch("scratch", BVB_HARRIS_NMS_SCRATCH_BYTES(w));
   c.buf(ir).word(w).word(h).word(stride).word(threshold).buf(io).buf(in).buf(is);
   c.host = [=](HostBuffers &m) {
-    bvb_harris_nms_c(m.s32(ir), w, h, stride, threshold, m.s32(io), m.s32(in), m.u8(is));
+    m.set_ret(bvb_harris_nms_c(m.s32(ir), w, h, stride, threshold, m.s32(io), m.s32(in), m.u8(is)));
   };
   return c;
 }
@@ -119,7 +99,7 @@ CheckCall select_call(std::vector<int32_t> cand, int32_t max_corners, int32_t mi
   c.buf(ic).word(n).word(max_corners).word(min_distance).buf(io);
   // The count returned is not compared; the entries after the last corner taken keep the
   // output's poison pattern, so a wrong count shows there.
-  c.host = [=](HostBuffers &m) { bvb_harris_select_c(m.s32(ic), n, max_corners, min_distance, m.s32(io)); };
+  c.host = [=](HostBuffers &m) { m.set_ret(bvb_harris_select_c(m.s32(ic), n, max_corners, min_distance, m.s32(io))); };
   return c;
 }
 
@@ -158,7 +138,7 @@ void check(Checker &ck) {
         std::string name = std::to_string(s.w) + "x" + std::to_string(s.h) + " strides " + std::to_string(ss) +
                            "/" + std::to_string(ds) + " " + in.first;
         CheckCall c = response_call(s.w, s.h, ss, ds, std::move(in.second), name);
-        place_buffers(c, kPlaces[rng.uniform(0, 3)]);
+        ck.place_randomly(c);
         c.bufs[0].skew = uint32_t(rng.uniform(0, 3));  // the source has no alignment contract
         ck.add(std::move(c));
       }
@@ -183,12 +163,12 @@ void check(Checker &ck) {
                                     base + " max " + std::to_string(max_corners) + " dist " +
                                         std::to_string(min_distance),
                                     double(s.w) * s.h);
-          place_buffers(c, kPlaces[rng.uniform(0, 3)]);
+          ck.place_randomly(c);
           ck.add(std::move(c));
         }
         if (ck.wants("harris_nms")) {
           CheckCall c = nms_call(s.w, s.h, stride, std::move(resp), threshold, base);
-          place_buffers(c, kPlaces[rng.uniform(0, 3)]);
+          ck.place_randomly(c);
           ck.add(std::move(c));
         }
       }

@@ -22,23 +22,6 @@
 namespace bvb {
 namespace {
 
-const uint32_t kPlaces[] = {BVB_PLACE_SDRAM, BVB_PLACE_L1A, BVB_PLACE_L1B};
-
-size_t room(uint32_t place) { return place == BVB_PLACE_L1B ? 24576u : 32768u; }
-
-void place_buffers(CheckCall &c, uint32_t place) {
-  size_t used = 0;
-  for (auto &b : c.bufs) {
-    const size_t need = b.data.size() + 2 * b.guard + b.align + 8;
-    if (used + need <= room(place)) {
-      b.place = place;
-      used += need;
-    } else {
-      b.place = BVB_PLACE_SDRAM;
-    }
-  }
-}
-
 template <class T> std::vector<uint8_t> as_bytes(const std::vector<T> &v) {
   std::vector<uint8_t> b(v.size() * sizeof(T));
   std::memcpy(b.data(), v.data(), b.size());
@@ -143,7 +126,7 @@ void check(Checker &ck) {
                                    std::to_string(s.w) + "x" + std::to_string(s.h) + " stride " +
                                        std::to_string(stride) + " levels " + std::to_string(levels) + " " +
                                        pattern_name(p));
-        place_buffers(c, kPlaces[rng.uniform(0, 2)]);
+        ck.place_randomly(c);
         c.bufs[0].skew = uint32_t(rng.uniform(0, 3));  // the frame has no alignment contract
         ck.add(std::move(c));
       }
@@ -185,7 +168,7 @@ void check(Checker &ck) {
                       s.w, s.h, t.stride, pattern_name(kind), variant == 1 ? "/noise" : "", dx, dy, p.levels, p.win_w,
                       p.win_h, p.max_iter, p.flags ? " fixed" : "", p.eps_q16, p.min_det, p.count);
         CheckCall c = track_call(t, name);
-        place_buffers(c, kPlaces[rng.uniform(0, 2)]);
+        ck.place_randomly(c);
         for (int b : {0, 2}) c.bufs[b].skew = uint32_t(rng.uniform(0, 3));
         ck.add(std::move(c));
       }

@@ -40,13 +40,6 @@ size_t scratch_bytes(int r, int s) {
   return BVB_NCC_SCRATCH_SIZE(r, s);
 }
 
-// Room for a group of buffers in a memory, with guard bands and alignment slack.
-size_t room(uint32_t place) {
-  return place == BVB_PLACE_SCRATCH ? 4096u : place == BVB_PLACE_L1B ? 24576u : place == BVB_PLACE_L1A ? 32768u
-                                                                                                      : ~size_t(0);
-}
-size_t footprint(const Buffer &b) { return b.data.size() + 2 * b.guard + 16; }
-
 CheckCall match_call(const Frames &fr, const std::vector<std::pair<int, int>> &pts, int r, int s,
                      const std::string &case_name) {
   CheckCall c;
@@ -141,36 +134,13 @@ std::vector<std::pair<int, int>> pick_points(int w, int h, int r, int s, int cou
   return pts;
 }
 
-// Places the call's buffers: frames in SDRAM or L1, the scratch in L1 bank A or B, the
-// scratchpad or SDRAM, when they fit; frames at any byte offset.
-void place(CheckCall &c, Rng &rng) {
-  static const uint32_t places[] = {BVB_PLACE_SDRAM, BVB_PLACE_L1A, BVB_PLACE_L1B, BVB_PLACE_SCRATCH};
-  const uint32_t frames_at = places[rng.uniform(0, 2)];
-  size_t frames = 0;
-  for (auto &b : c.bufs)
-    if (b.name == "frame1" || b.name == "frame2") frames += footprint(b);
+// Frames at any byte offset, the int16 arrays on halfwords; then L1 or SDRAM.
+void place(Checker &ck, CheckCall &c, Rng &rng) {
   for (auto &b : c.bufs) {
-    if (b.name == "frame1" || b.name == "frame2") {
-      b.place = frames <= room(frames_at) ? frames_at : uint32_t(BVB_PLACE_SDRAM);
-      b.skew = uint32_t(rng.uniform(0, 3));
-    } else if (b.name == "scratch") {
-      uint32_t p = places[rng.uniform(0, 3)];
-      if (p == frames_at && p != BVB_PLACE_SDRAM && footprint(b) + frames > room(p)) p = BVB_PLACE_SDRAM;
-      b.place = footprint(b) <= room(p) ? p : uint32_t(BVB_PLACE_SDRAM);
-    } else {
-      b.place = rng.uniform(0, 1) ? BVB_PLACE_SDRAM : BVB_PLACE_SCRATCH;
-      b.skew = uint32_t(2 * rng.uniform(0, 1));
-    }
+    if (b.name == "frame1" || b.name == "frame2") b.skew = uint32_t(rng.uniform(0, 3));
+    else if (b.name != "scratch") b.skew = uint32_t(2 * rng.uniform(0, 1));
   }
-  // Everything placed in one L1 memory must fit there together.
-  for (uint32_t p : {BVB_PLACE_L1A, BVB_PLACE_L1B, BVB_PLACE_SCRATCH}) {
-    size_t used = 0;
-    for (auto &b : c.bufs)
-      if (b.place == p) used += footprint(b);
-    if (used > room(p))
-      for (auto &b : c.bufs)
-        if (b.place == p && b.name != "frame1" && b.name != "frame2") b.place = BVB_PLACE_SDRAM;
-  }
+  ck.place_randomly(c);
 }
 
 // A radius and search range that fit a w x h frame (when any does), favouring the robot's
@@ -226,7 +196,7 @@ void check(Checker &ck) {
         std::snprintf(name, sizeof name, "%dx%d stride %d %s %s %s, %d points", sz.w, sz.h, fr.stride,
                       rs_name(r, s).c_str(), pattern_name(p), how.c_str(), npts);
         CheckCall c = match_call(fr, pts, r, s, name);
-        place(c, rng);
+        place(ck, c, rng);
         ck.add(std::move(c));
       }
     }
@@ -246,7 +216,7 @@ void check(Checker &ck) {
       std::snprintf(name, sizeof name, "%dx%d tile %dx%d moved %d,%d %s", fr.w, fr.h, px, py, tx, ty,
                     rs_name(r, s).c_str());
       CheckCall c = match_call(fr, pts, r, s, name);
-      place(c, rng);
+      place(ck, c, rng);
       ck.add(std::move(c));
     }
     // Many points in one call, legal ones mixed with border ones and repeats: the assembly copies
@@ -264,7 +234,7 @@ void check(Checker &ck) {
       std::snprintf(name, sizeof name, "%dx%d %s %s, %zu points", fr.w, fr.h, rs_name(5, s).c_str(),
                     pattern_name(p), pts.size());
       CheckCall c = match_call(fr, pts, 5, s, name);
-      place(c, rng);
+      place(ck, c, rng);
       ck.add(std::move(c));
     }
     // Parameters out of range, and no points at all.
@@ -301,7 +271,7 @@ void check(Checker &ck) {
         std::snprintf(name, sizeof name, "%dx%d stride %d %s %s at %d,%d", sz.w, sz.h, fr.stride,
                       rs_name(r, s).c_str(), pattern_name(p), pt.first, pt.second);
         CheckCall c = scoremap_call(fr, pt.first, pt.second, r, s, name);
-        place(c, rng);
+        place(ck, c, rng);
         ck.add(std::move(c));
       }
     }

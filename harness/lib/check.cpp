@@ -154,12 +154,26 @@ bool Checker::wants(const std::string &kernel) const {
 }
 
 void Checker::place_randomly(CheckCall &call) {
-  static const uint32_t places[] = {BVB_PLACE_SDRAM, BVB_PLACE_L1A, BVB_PLACE_L1B, BVB_PLACE_SCRATCH};
-  const uint32_t place = places[rng_.uniform(0, 3)];
-  size_t total = 0;
-  for (const auto &b : call.bufs) total += b.data.size() + 2 * b.guard + b.align + b.skew;
-  const uint32_t chosen = total <= target_.arena_bytes(place) ? place : uint32_t(BVB_PLACE_SDRAM);
-  for (auto &b : call.bufs) b.place = chosen;
+  // One call in four keeps everything in SDRAM; otherwise each buffer goes to the first of the
+  // L1 memories, tried from a random one, that still has room for it, else to SDRAM.
+  static const uint32_t l1[3] = {BVB_PLACE_L1A, BVB_PLACE_L1B, BVB_PLACE_SCRATCH};
+  uint64_t room[3];
+  for (int i = 0; i < 3; ++i) room[i] = target_.arena_bytes(l1[i]);
+  const bool sdram_only = rng_.uniform(0, 3) == 0;
+  const int first = rng_.uniform(0, 2);
+  for (auto &b : call.bufs) {
+    b.place = BVB_PLACE_SDRAM;
+    if (sdram_only) continue;
+    const uint64_t need = b.data.size() + 2 * b.guard + b.align + b.skew;
+    for (int k = 0; k < 3; ++k) {
+      const int i = (first + k) % 3;
+      if (need <= room[i]) {
+        room[i] -= need;
+        b.place = l1[i];
+        break;
+      }
+    }
+  }
 }
 
 void Checker::add(CheckCall call, Observer observer) {

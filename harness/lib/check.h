@@ -114,8 +114,9 @@ class Checker {
   // Is this kernel selected by -k and present in the firmware?
   bool wants(const std::string &kernel) const;
 
-  // Puts all of the call's buffers together in one memory chosen at random (SDRAM, L1 bank A
-  // or B, scratchpad) among those they fit in, as firmware would for a working set that fits.
+  // Places the call's buffers as firmware would: in L1 (data bank A, B, the scratchpad) while
+  // there is room, the rest in SDRAM; which bank is tried first, and whether a call stays all
+  // in SDRAM, is random. Uses the firmware image's real arena sizes.
   void place_randomly(CheckCall &call);
 
   // Queues the call on every implementation the firmware has (plus the host reference).

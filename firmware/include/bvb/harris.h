@@ -24,7 +24,8 @@
  * rows. width, height >= 5; src_stride >= width, dst_stride >= width; no alignment required of src,
  * dst 4-byte aligned. scratch: BVB_HARRIS_SCRATCH_BYTES(width) bytes, 4-byte aligned, any
  * contents (working rows; the assembly keeps them there, the C reference uses part of it).
- * The kernel reads only the image's pixels (rows of width bytes). */
+ * The assembly reads the frame by aligned words: bytes of the 4-byte words that hold the rows'
+ * pixels, so up to 3 bytes either side of a row, never further. */
 #ifndef BVB_HARRIS_H
 #define BVB_HARRIS_H
 

@@ -55,8 +55,12 @@
  * bvb_lk_pyramid writes them (ignored when levels = 1; 4-byte aligned); params: struct
  * bvb_lk_params; in: 2 int32 per feature (x, y, Q16, level 0 of prev); out: BVB_LK_OUT_WORDS
  * int32 per feature (x, y in Q16 in next, status, iterations summed over the levels, and the
- * last iteration's bx, by); scratch: BVB_LK_SCRATCH_BYTES, 4-byte aligned, any contents.
- * width, height >= 1. */
+ * last iteration's bx, by, 0 if none ran); a lost feature reports where it was lost (its input
+ * position when its level-0 template was unusable). scratch: BVB_LK_SCRATCH_BYTES, 4-byte
+ * aligned, any contents. width, height >= 1 and <= 16384; feature coordinates within
+ * +-16384 pixels. bvb_lk_pyramid: 1 <= levels <= BVB_LK_MAX_LEVELS (a level of zero size is
+ * empty); pyr 4-byte aligned; its assembly reads the frame by aligned words (up to 3 bytes
+ * either side of a row). */
 #ifndef BVB_LK_H
 #define BVB_LK_H
 

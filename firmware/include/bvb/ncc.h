@@ -19,10 +19,10 @@
  *   sign(num_a)*num_a^2 * v_b  >  sign(num_b)*num_b^2 * v_a,
  * compared as signs first and then as 96-bit unsigned products (num^2 < 2^56, v < 2^28); vt is
  * common to both sides and cancels. A window of zero variance (v = 0) has num = 0 and scores
- * exactly 0. Equal scores are ties, broken by the offset: the smallest
- * |dx|+|dy| wins, then the smallest dy, then the smallest dx (so a flat search area, or a
- * periodic pattern, gives the match nearest to no motion). The result is the unique maximum of
- * this total order, whatever order an implementation visits the candidates in.
+ * exactly 0. Equal scores are ties, broken by the offset: the smallest |dx|+|dy| wins, then the
+ * smallest dy, then the smallest dx (so a flat search area, or a periodic pattern, gives the
+ * match nearest to no motion). The result is the unique maximum of this total order, whatever
+ * order an implementation visits the candidates in.
  *
  * Reported score: Q15 in an int16 (32767 ~ 1.0), computed from the winner's num and v as follows
  * (bit for bit in every implementation):
@@ -45,7 +45,7 @@
  * Points that are not BVB_NCC_OK report dx = dy = score = 0. A flat template (vt = 0) reports
  * BVB_NCC_FLAT (every score would be 0).
  * scratch: BVB_NCC_SCRATCH_SIZE(r, s) bytes, 4-byte aligned (working buffers of the assembly;
- * the C reference does not use it). For r = 5, s = 8 it is about 9 KB: L1 data bank A in the
+ * the C reference does not use it). For r = 5, s = 8 it is 11,376 bytes: L1 data bank A in the
  * robot's firmware, frames in SDRAM. */
 #ifndef BVB_NCC_H
 #define BVB_NCC_H
@@ -69,9 +69,9 @@
 #define BVB_NCC_L(r, s) (2 * (s) + 2 * (r) + 1)
 #define BVB_NCC_PIPELINED(r, s) ((r) == 5 && (s) >= 5 && (s) <= 10)
 #define BVB_NCC_SCRATCH_SIZE(r, s)                                                                 \
-  (320 + 4 * BVB_NCC_L(r, s) * (BVB_NCC_L(r, s) + 1) + 4                                          \
+  (336 + 4 * BVB_NCC_L(r, s) * (BVB_NCC_L(r, s) + 1) + 4                                          \
    + 4 * (((2 * (r) + 1) * (2 * (r) + 1) + 1) / 2) + 4 * (2 * (r) + 1) * ((r) + 1)                \
-   + 8 * (BVB_NCC_L(r, s) + 1) * (((s) + 3) / 2) + 4 * (2 * (s) + 2) * (2 * (s) + 2)               \
+   + 12 * (BVB_NCC_L(r, s) + 1) * (((s) + 3) / 2) + 4 * (2 * (s) + 2) * (2 * (s) + 2)               \
    + (BVB_NCC_PIPELINED(r, s)                                                                      \
           ? 4 * BVB_NCC_L(r, s) * (BVB_NCC_L(r, s) + 1) + 4 + 12 * (4 * BVB_NCC_L(r, s) + 2 * (s) + 1) \
           : 0))
