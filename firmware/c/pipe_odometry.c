@@ -148,6 +148,7 @@ struct odo_setup {
   int32_t ok;
   int32_t floor_y0, hreg;      /* feature region: rows floor_y0 .. height-1 */
   int32_t sin18, cos18;        /* tilt, Q18 */
+  int32_t fy_fx;               /* fy / fx, Q16 */
   int32_t gain_q8;             /* G of the rotation, Q8 pixels per radian */
   int32_t shift_range;         /* T = win_w - rho */
   int32_t bins, bins_rho;      /* the compared profile: angle bins, or the window's columns */
@@ -188,6 +189,7 @@ static void setup(const struct bvb_odo_params *p, struct odo_setup *s) {
   int32_t c30, s30;
   bvb_odo_sincos(p->tilt, &c30, &s30);
   s->cos18 = (int32_t)shr_round(c30, 12);
+  s->fy_fx = (int32_t)div_round((int64_t)p->fy * 65536, p->fx);
   s->sin18 = (int32_t)shr_round(s30, 12);
 
   /* The floor at distance R (from the camera's foot) is seen at yn = (h cos - R sin) /
@@ -365,20 +367,39 @@ static int32_t refine_shift(const int32_t *res, const uint32_t *curve, int32_t w
   return t * 256 + (int32_t)delta;
 }
 
+/* Bit length of v > 0 (v < 2^62). */
+static int32_t bitlen64(int64_t v) {
+  int32_t n = 0;
+  uint32_t w = (uint32_t)(v >> 31);
+  if (w) n = 31;
+  else w = (uint32_t)v;
+  while (w) {
+    ++n;
+    w >>= 1;
+  }
+  return n;
+}
+
 /* A point (Q8 pixels) on the floor, robot frame: F ahead of the axle, L to the left, Q16 inches.
- * Returns 0 above the horizon or beyond far. */
+ * Returns 0 above the horizon or beyond far. One 32-bit division per point: D is normalised to
+ * 16 significant bits and inverted, R = floor((2^31 - 1) / Dn), and the two ratios F / h and
+ * L / h (Q16) are products with R; they keep about 16 significant bits. */
 static int32_t to_floor(const struct bvb_odo_params *p, const struct odo_setup *s, int32_t xq8, int32_t yq8,
                         int64_t far, int32_t *F, int32_t *L) {
   const int64_t v = (int64_t)yq8 - p->cy, u = (int64_t)xq8 - p->cx;
   const int64_t D = (int64_t)p->fy * s->sin18 + v * s->cos18;      /* Q26 */
-  if (D <= 0) return 0;
   const int64_t NF = (int64_t)p->fy * s->cos18 - v * s->sin18;     /* Q26 */
-  const int64_t f = div_round((int64_t)p->cam_height * NF, D);       /* Q16 */
+  if (D < 32768 || NF <= 0) return 0;
+  const int32_t sd = bitlen64(D) - 16;
+  const uint32_t R = 0x7FFFFFFFu / (uint32_t)(D >> sd);              /* (2^15, 2^16] */
+  const int64_t rf = ((NF >> sd) * (int64_t)R) >> 15;                /* F / h, Q16 */
+  if (rf > ((int64_t)1 << 30)) return 0;
+  const int64_t f = ((int64_t)p->cam_height * rf) >> 16;
   if (f > far) return 0;
-  const int64_t uy = u * p->fy / p->fx;                              /* Q8, scaled by fy / fx */
-  const int64_t l = -div_round((int64_t)p->cam_height * uy * ((int64_t)1 << 18), D);
+  const int64_t uy = (u * s->fy_fx) >> 16;                           /* Q8, scaled by fy / fx */
+  const int64_t rl = (((uy * 262144) >> sd) * (int64_t)R) >> 15;     /* -L / h, Q16 */
   *F = (int32_t)(f + p->cam_offset);
-  *L = (int32_t)l;
+  *L = (int32_t)(-(((int64_t)p->cam_height * rl) >> 16));
   return 1;
 }
 
@@ -458,22 +479,109 @@ static int32_t track(const struct odo_ops *ops, const struct bvb_odo_params *p, 
   return k;
 }
 
-/* Harris corners of this frame's floor region, stored as the next frame's features. */
-static int32_t detect(const struct odo_ops *ops, const struct bvb_odo_params *p, const struct odo_setup *s,
-                      const uint8_t *frame, uint8_t *x, struct odo_state *st) {
-  const int32_t w = p->width;
-  int32_t *resp = (int32_t *)(x + s->x_resp), *cand = (int32_t *)(x + s->x_cand);
-  int32_t *corners = (int32_t *)(x + s->x_corners);
-  int32_t count = 0;
-  ops->harris_response(frame + s->floor_y0 * p->stride, resp, w, s->hreg, p->stride, w, x + s->x_hscr);
-  ops->harris_nms(resp, w, s->hreg, w, p->harris_threshold, cand, &count, x + s->x_nmsscr);
-  const int32_t n = bvb_harris_select_c(cand, count, p->max_features, p->min_distance, corners);
-  for (int32_t i = 0; i < n; ++i) {
-    st->feat[2 * i] = corners[3 * i] * Q16;
-    st->feat[2 * i + 1] = (corners[3 * i + 1] + s->floor_y0) * Q16;
+static void copy_words(uint8_t *dst, const uint8_t *src, uint32_t n) {
+  if ((((uintptr_t)dst | (uintptr_t)src | n) & 3) == 0) {
+    uint32_t *d = (uint32_t *)dst;
+    const uint32_t *q = (const uint32_t *)src;
+    for (uint32_t i = 0; i < n / 4; ++i) d[i] = q[i];
+  } else {
+    copy_bytes(dst, src, n);
   }
-  st->nfeat = n;
-  return n;
+}
+
+/* What one frame computes before it is committed to the state. */
+struct odo_frame {
+  int32_t shift, t, dth_vis, dth_enc, dth, motion, flags;
+  int32_t win_restart;
+  int32_t tracked, m, inliers, dfwd_vis, dfwd_enc, dfwd;
+  int32_t x, y, heading;
+  int32_t ncorners;
+};
+
+/* Stage 5: the floor motion of the tracked points, the robust forward estimate, the
+ * translation's fusion and the pose. */
+static void estimate(const struct bvb_odo_params *p, const struct odo_setup *s, const struct odo_state *st,
+                     uint8_t *x, struct odo_frame *f) {
+  const int32_t *pairs = (const int32_t *)(x + s->x_pairs);
+  int32_t c30, s30, ch, sh;
+  bvb_odo_sincos(f->motion, &c30, &s30);
+  bvb_odo_sincos(f->motion / 2, &ch, &sh);
+  int32_t *dv = (int32_t *)(x + s->x_d), *ev = (int32_t *)(x + s->x_e), *srt = (int32_t *)(x + s->x_sort);
+  const int64_t far = 2 * (int64_t)p->max_range;
+  int32_t m = 0;
+  for (int32_t i = 0; i < f->tracked; ++i) {
+    int32_t Fp, Lp, Fq, Lq;
+    if (!to_floor(p, s, pairs[4 * i], pairs[4 * i + 1], far, &Fp, &Lp)) continue;
+    if (!to_floor(p, s, pairs[4 * i + 2], pairs[4 * i + 3], far, &Fq, &Lq)) continue;
+    /* T = P - R(dtheta) Q, then along and across the chord */
+    const int32_t tx = Fp - (int32_t)shr_round((int64_t)c30 * Fq - (int64_t)s30 * Lq, 30);
+    const int32_t ty = Lp - (int32_t)shr_round((int64_t)s30 * Fq + (int64_t)c30 * Lq, 30);
+    dv[m] = (int32_t)shr_round((int64_t)ch * tx + (int64_t)sh * ty, 30);
+    ev[m] = (int32_t)shr_round((int64_t)ch * ty - (int64_t)sh * tx, 30);
+    srt[m] = dv[m];
+    ++m;
+  }
+  int32_t inliers = 0, dfwd_vis = 0;
+  if (m > 0) {
+    sort_i32(srt, m);
+    const int32_t med = srt[m / 2];
+    int64_t sum = 0;
+    for (int32_t i = 0; i < m; ++i)
+      if (iabs(dv[i] - med) <= p->inlier_tol && iabs(ev[i]) <= p->inlier_tol) {
+        sum += dv[i];
+        ++inliers;
+      }
+    if (inliers > 0) dfwd_vis = (int32_t)div_round(sum, inliers);
+  }
+  int32_t dfwd = dfwd_vis;
+  if (inliers < p->min_inliers) {
+    f->flags |= BVB_ODO_F_FWD_NONE;
+    dfwd = 0;
+  }
+  if (p->fuse && (inliers < p->min_inliers || iabs(dfwd_vis - f->dfwd_enc) > p->fuse_trans_tol)) {
+    dfwd = f->dfwd_enc;
+    f->flags |= BVB_ODO_F_FWD_ENC;
+  }
+  f->m = m;
+  f->inliers = inliers;
+  f->dfwd_vis = dfwd_vis;
+  f->dfwd = dfwd;
+  int32_t cm, sm;
+  bvb_odo_sincos(st->heading + f->dth / 2, &cm, &sm);
+  f->x = st->x + mul_q30(dfwd, cm);
+  f->y = st->y + mul_q30(dfwd, sm);
+  f->heading = st->heading + f->dth;
+}
+
+/* Stage 2: the profile's rotation since the key, the encoders, and the rotation's fusion. */
+static void rotation(const struct odo_ops *ops, const struct bvb_odo_params *p, const struct odo_setup *s,
+                     const struct odo_state *st, const uint8_t *key, const uint8_t *cur, int32_t left,
+                     int32_t right, uint8_t *x, struct odo_frame *f) {
+  int32_t *res = (int32_t *)(x + s->x_result);
+  uint32_t *curve = (uint32_t *)(x + s->x_curve);
+  ops->shift(key, cur, s->bins, s->bins_rho, res, curve);
+  f->t = res[0];
+  f->shift = refine_shift(res, curve, s->bins, s->shift_range, p->shift_fit);
+  const int32_t rel = p->rot_bins ? (int32_t)div_round((int64_t)f->shift * s->dphi_row, 256)
+                                  : bvb_odo_atan2(f->shift, s->gain_q8);
+  f->dth_vis = st->key_heading + rel - st->heading;
+  const int32_t dl = left - st->left, dr = right - st->right;
+  f->dfwd_enc = (int32_t)div_round((int64_t)(dl + dr) * ((int64_t)1 << 23), p->tpi);
+  f->dth_enc = enc_angle(dl, dr, p);
+  f->dth = f->motion = f->dth_vis;
+  if (!p->fuse) return;
+  if (iabs(f->dth_vis - f->dth_enc) > p->fuse_rot_tol) {
+    f->dth = f->motion = f->dth_enc;
+    f->flags |= BVB_ODO_F_ROT_ENC;
+  }
+  /* Over the window the encoders' heading change comes from whole tick counts, so their
+   * rounding does not add up: a slow visual drift (a moving object in the band) shows. */
+  const int32_t e = enc_angle(left - st->win_left, right - st->win_right, p);
+  if (iabs(st->heading + f->dth - st->win_heading - e) > p->fuse_rot_tol) {
+    f->dth = st->win_heading + e - st->heading; /* this frame's turn and the window's correction */
+    f->flags |= BVB_ODO_F_ROT_ENC | BVB_ODO_F_ROT_WIN;
+  }
+  f->win_restart = (f->flags & BVB_ODO_F_ROT_ENC) || st->win_age + 1 >= p->fuse_window;
 }
 
 static int32_t odometry_run(const uint8_t *frame, const int32_t *info, const struct bvb_odo_params *p,
@@ -483,152 +591,118 @@ static int32_t odometry_run(const uint8_t *frame, const int32_t *info, const str
   if (!s.ok) return -1;
   struct odo_state *st = (struct odo_state *)state;
   uint8_t *x = (uint8_t *)scratch;
-  uint8_t *prev_profile = state + s.s_profile, *prev = state + s.s_frame, *prev_pyr = state + s.s_pyr;
+  uint8_t *key = state + s.s_profile, *prev = state + s.s_frame, *prev_pyr = state + s.s_pyr;
   uint8_t *profile = x + s.x_profile, *pyr = x + s.x_pyr;
   int32_t *table = (int32_t *)(state + s.s_table);
+  int32_t *corners = (int32_t *)(x + s.x_corners);
   uint8_t *cur = p->rot_bins ? x + s.x_bins : profile + p->win_x0;
-  const int32_t w = p->width, h = p->height, stride = p->stride;
+  const int32_t w = p->width, h = p->height, stride = p->stride, lk = p->tracker == BVB_ODO_TRACK_LK;
   const int32_t left = info[BVB_ODO_INFO_LEFT], right = info[BVB_ODO_INFO_RIGHT];
+  const int32_t stages = info[BVB_ODO_INFO_STAGES] > 0 ? info[BVB_ODO_INFO_STAGES] : BVB_ODO_STAGES;
+  const int32_t first = !st->initialised;
+  struct odo_frame f;
+  int32_t k = 0;
 
   for (int32_t i = 0; i < BVB_ODO_RESULT_WORDS; ++i) result[i] = 0;
-  ops->profile(frame + p->band_y0 * stride, w, p->band_rows, stride, profile, x + s.x_pscratch);
-  if (p->tracker == BVB_ODO_TRACK_LK) ops->lk_pyramid(frame, w, h, stride, p->lk_levels, pyr);
+  f.flags = f.win_restart = f.tracked = f.m = f.inliers = f.dfwd_vis = f.dfwd_enc = f.dfwd = 0;
+  f.shift = f.t = f.dth_vis = f.dth_enc = f.dth = f.motion = f.ncorners = 0;
+  f.x = first ? p->start_x : st->x;
+  f.y = first ? p->start_y : st->y;
+  f.heading = first ? p->start_heading : st->heading;
 
-  int32_t tracked = 0, new_key = 1;
-  if (!st->initialised && p->rot_bins) make_table(p, &s, table);
+  /* 1: the band's profile (in angle bins) */
+  ops->profile(frame + p->band_y0 * stride, w, p->band_rows, stride, profile, x + s.x_pscratch);
+  if (first && p->rot_bins) make_table(p, &s, table);
   if (p->rot_bins) resample(profile, p->win_x0 + p->win_w - 1, table, s.bins, cur);
-  if (!st->initialised) {
+  if (++k >= stages) goto done;
+  /* 2: rotation */
+  if (!first) rotation(ops, p, &s, st, key, cur, left, right, x, &f);
+  if (++k >= stages) goto done;
+  /* 3: this frame's pyramid */
+  if (lk) ops->lk_pyramid(frame, w, h, stride, p->lk_levels, pyr);
+  if (++k >= stages) goto done;
+  /* 4: the previous frame's features tracked into this one */
+  if (!first) f.tracked = track(ops, p, &s, st, prev, prev_pyr, frame, pyr, x, (int32_t *)(x + s.x_pairs));
+  if (++k >= stages) goto done;
+  /* 5: translation and pose */
+  if (!first) estimate(p, &s, st, x, &f);
+  if (++k >= stages) goto done;
+  /* 6, 7: Harris corners of the floor region, for the next frame */
+  ops->harris_response(frame + s.floor_y0 * stride, (int32_t *)(x + s.x_resp), w, s.hreg, stride, w, x + s.x_hscr);
+  if (++k >= stages) goto done;
+  {
+    int32_t *cand = (int32_t *)(x + s.x_cand), count = 0;
+    ops->harris_nms((int32_t *)(x + s.x_resp), w, s.hreg, w, p->harris_threshold, cand, &count, x + s.x_nmsscr);
+    f.ncorners = bvb_harris_select_c(cand, count, p->max_features, p->min_distance, corners);
+  }
+  if (++k >= stages) goto done;
+  /* 8: commit: the pose, the fusion window, the key profile, this frame as the previous one */
+  if (first) {
     st->initialised = 1;
     st->frames = 0;
-    st->x = p->start_x;
-    st->y = p->start_y;
-    st->heading = p->start_heading;
-    st->win_heading = st->heading;
+    st->win_heading = f.heading;
     st->win_left = left;
     st->win_right = right;
     st->win_age = 0;
   } else {
-    /* rotation */
-    int32_t *res = (int32_t *)(x + s.x_result);
-    uint32_t *curve = (uint32_t *)(x + s.x_curve);
-    ops->shift(prev_profile, cur, s.bins, s.bins_rho, res, curve);
-    const int32_t shift = refine_shift(res, curve, s.bins, s.shift_range, p->shift_fit);
-    const int32_t rel = p->rot_bins ? (int32_t)div_round((int64_t)shift * s.dphi_row, 256)
-                                    : bvb_odo_atan2(shift, s.gain_q8);
-    const int32_t dth_vis = st->key_heading + rel - st->heading;
-
-    /* encoders */
-    const int32_t dl = left - st->left, dr = right - st->right;
-    const int32_t dfwd_enc = (int32_t)div_round((int64_t)(dl + dr) * ((int64_t)1 << 23), p->tpi);
-    const int32_t dth_enc = enc_angle(dl, dr, p);
-    int32_t flags = 0, dth = dth_vis, motion = dth_vis; /* motion: this frame's turn, for the features */
+    st->frames += 1;
     if (p->fuse) {
-      if (iabs(dth_vis - dth_enc) > p->fuse_rot_tol) {
-        dth = dth_enc;
-        flags |= BVB_ODO_F_ROT_ENC;
-      }
-      motion = dth;
-      /* Over the window the encoders' heading change comes from whole tick counts, so their
-       * rounding does not add up: a slow visual drift (a moving object in the band) shows. */
-      const int32_t e = enc_angle(left - st->win_left, right - st->win_right, p);
-      if (iabs(st->heading + dth - st->win_heading - e) > p->fuse_rot_tol) {
-        dth = st->win_heading + e - st->heading; /* this frame's turn and the window's correction */
-        flags |= BVB_ODO_F_ROT_ENC | BVB_ODO_F_ROT_WIN;
-      }
       st->win_age += 1;
-      if ((flags & BVB_ODO_F_ROT_ENC) || st->win_age >= p->fuse_window) {
-        st->win_heading = st->heading + dth;
+      if (f.win_restart) {
+        st->win_heading = f.heading;
         st->win_left = left;
         st->win_right = right;
         st->win_age = 0;
       }
     }
-
-    /* translation */
-    int32_t *pairs = (int32_t *)(x + s.x_pairs);
-    tracked = track(ops, p, &s, st, prev, prev_pyr, frame, pyr, x, pairs);
-    int32_t c30, s30, ch, sh;
-    bvb_odo_sincos(motion, &c30, &s30);
-    bvb_odo_sincos(motion / 2, &ch, &sh);
-    int32_t *dv = (int32_t *)(x + s.x_d), *ev = (int32_t *)(x + s.x_e), *srt = (int32_t *)(x + s.x_sort);
-    const int64_t far = 2 * (int64_t)p->max_range;
-    int32_t m = 0;
-    for (int32_t i = 0; i < tracked; ++i) {
-      int32_t Fp, Lp, Fq, Lq;
-      if (!to_floor(p, &s, pairs[4 * i], pairs[4 * i + 1], far, &Fp, &Lp)) continue;
-      if (!to_floor(p, &s, pairs[4 * i + 2], pairs[4 * i + 3], far, &Fq, &Lq)) continue;
-      /* T = P - R(dtheta) Q */
-      const int32_t tx = Fp - (int32_t)shr_round((int64_t)c30 * Fq - (int64_t)s30 * Lq, 30);
-      const int32_t ty = Lp - (int32_t)shr_round((int64_t)s30 * Fq + (int64_t)c30 * Lq, 30);
-      dv[m] = (int32_t)shr_round((int64_t)ch * tx + (int64_t)sh * ty, 30);
-      ev[m] = (int32_t)shr_round((int64_t)ch * ty - (int64_t)sh * tx, 30);
-      srt[m] = dv[m];
-      ++m;
-    }
-    int32_t inliers = 0, dfwd_vis = 0;
-    if (m > 0) {
-      sort_i32(srt, m);
-      const int32_t med = srt[m / 2];
-      int64_t sum = 0;
-      for (int32_t i = 0; i < m; ++i)
-        if (iabs(dv[i] - med) <= p->inlier_tol && iabs(ev[i]) <= p->inlier_tol) {
-          sum += dv[i];
-          ++inliers;
-        }
-      if (inliers > 0) dfwd_vis = (int32_t)div_round(sum, inliers);
-    }
-    int32_t dfwd = dfwd_vis;
-    if (inliers < p->min_inliers) {
-      flags |= BVB_ODO_F_FWD_NONE;
-      dfwd = 0;
-    }
-    if (p->fuse && (inliers < p->min_inliers || iabs(dfwd_vis - dfwd_enc) > p->fuse_trans_tol)) {
-      dfwd = dfwd_enc;
-      flags |= BVB_ODO_F_FWD_ENC;
-    }
-
-    /* pose */
-    int32_t cm, sm;
-    bvb_odo_sincos(st->heading + dth / 2, &cm, &sm);
-    st->x += mul_q30(dfwd, cm);
-    st->y += mul_q30(dfwd, sm);
-    st->heading += dth;
-    /* A new key profile when this one has moved far enough (the next frame's shift must stay
-     * inside the search range), grown old, or was overruled by the encoders. */
-    st->key_age += 1;
-    new_key = (flags & BVB_ODO_F_ROT_ENC) || iabs(res[0]) >= p->key_shift ||
-              iabs(res[0] - st->key_shift) < p->key_still || st->key_age >= p->key_frames;
-    st->key_shift = res[0];
-    st->frames += 1;
-
-    result[BVB_ODO_R_DTHETA_VIS] = dth_vis;
-    result[BVB_ODO_R_DTHETA_ENC] = dth_enc;
-    result[BVB_ODO_R_DTHETA] = dth;
-    result[BVB_ODO_R_DFWD_VIS] = dfwd_vis;
-    result[BVB_ODO_R_DFWD_ENC] = dfwd_enc;
-    result[BVB_ODO_R_DFWD] = dfwd;
-    result[BVB_ODO_R_SHIFT] = shift;
-    result[BVB_ODO_R_TRACKED] = m;
-    result[BVB_ODO_R_INLIERS] = inliers;
-    result[BVB_ODO_R_FLAGS] = flags;
   }
+  st->x = f.x;
+  st->y = f.y;
+  st->heading = f.heading;
   st->left = left;
   st->right = right;
-
-  /* this frame becomes the previous one */
-  result[BVB_ODO_R_DETECTED] = detect(ops, p, &s, frame, x, st);
-  if (new_key) {
-    copy_bytes(prev_profile, cur, (uint32_t)s.bins);
-    st->key_heading = st->heading;
+  /* A new key profile when this one has moved far enough (the next frame's shift must stay
+   * inside the search range), the robot is not turning, the key is old, or the encoders
+   * overruled it. */
+  st->key_age += 1;
+  if (first || (f.flags & BVB_ODO_F_ROT_ENC) || iabs(f.t) >= p->key_shift ||
+      iabs(f.t - st->key_shift) < p->key_still || st->key_age >= p->key_frames) {
+    copy_words(key, cur, (uint32_t)s.bins);
+    st->key_heading = f.heading;
     st->key_age = 0;
     st->key_shift = 0;
+  } else {
+    st->key_shift = f.t;
   }
-  for (int32_t r = 0; r < h; ++r) copy_bytes(prev + r * stride, frame + r * stride, (uint32_t)w);
-  if (p->tracker == BVB_ODO_TRACK_LK) copy_bytes(prev_pyr, pyr, s.pyr_bytes);
-  result[BVB_ODO_R_X] = st->x;
-  result[BVB_ODO_R_Y] = st->y;
-  result[BVB_ODO_R_HEADING] = st->heading;
-  return tracked;
+  for (int32_t i = 0; i < f.ncorners; ++i) {
+    st->feat[2 * i] = corners[3 * i] * Q16;
+    st->feat[2 * i + 1] = (corners[3 * i + 1] + s.floor_y0) * Q16;
+  }
+  st->nfeat = f.ncorners;
+  if (stride % 4 == 0)
+    copy_words(prev, frame, (uint32_t)(stride * h));
+  else
+    for (int32_t r = 0; r < h; ++r) copy_bytes(prev + r * stride, frame + r * stride, (uint32_t)w);
+  if (lk) copy_words(prev_pyr, pyr, s.pyr_bytes);
+  ++k;
+
+done:
+  result[BVB_ODO_R_X] = f.x;
+  result[BVB_ODO_R_Y] = f.y;
+  result[BVB_ODO_R_HEADING] = f.heading;
+  result[BVB_ODO_R_DTHETA_VIS] = f.dth_vis;
+  result[BVB_ODO_R_DTHETA_ENC] = f.dth_enc;
+  result[BVB_ODO_R_DTHETA] = f.dth;
+  result[BVB_ODO_R_DFWD_VIS] = f.dfwd_vis;
+  result[BVB_ODO_R_DFWD_ENC] = f.dfwd_enc;
+  result[BVB_ODO_R_DFWD] = f.dfwd;
+  result[BVB_ODO_R_SHIFT] = f.shift;
+  result[BVB_ODO_R_TRACKED] = f.m;
+  result[BVB_ODO_R_INLIERS] = f.inliers;
+  result[BVB_ODO_R_FLAGS] = f.flags;
+  result[BVB_ODO_R_DETECTED] = f.ncorners;
+  result[BVB_ODO_R_STAGES] = k;
+  return f.tracked;
 }
 
 static const struct odo_ops c_ops = {

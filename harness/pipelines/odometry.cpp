@@ -1,8 +1,8 @@
 // bfbench pipeline odometry, and the odometry kernel's family (check, bench, run).
 //
 // Parameters (--param K=V; defaults scale with the frame, shown at 160x120):
-//   tracker=lk|ncc [lk]   fuse=0|1 [0]   features=N [48]   min_dist=PX [8]   harris_thr=R [2000]
-//   max_range=IN [24]     levels=N [3]   win=PX [9]        iters=N [10]
+//   tracker=lk|ncc [lk]   fuse=0|1 [0]   features=N [32]   min_dist=PX [8]   harris_thr=R [300]
+//   max_range=IN [24]     levels=N [3]   win=PX [7]        iters=N [10]
 //   ncc_r=PX [5]          ncc_s=PX [8]   ncc_sub=0|1 [1]
 //   inlier_tol=MIL [100]  min_inliers=N [5]   (MIL: thousandths of an inch)
 //   tpi=N [50]            wheelbase=MIL [4000]   rot_tol=MDEG [1000]   trans_tol=MIL [100]
@@ -77,11 +77,11 @@ bvb_odo_params odometry_params(const Camera &cam, Params &params, const Pose &st
   if (tracker != "lk" && tracker != "ncc") throw InputError("parameter tracker=" + tracker + ": want lk or ncc");
   p.tracker = tracker == "lk" ? BVB_ODO_TRACK_LK : BVB_ODO_TRACK_NCC;
   p.max_range = q16(params.get_int("max_range", 24, 1, 256));
-  p.max_features = params.get_int("features", 48, 1, BVB_ODO_MAX_FEATURES);
+  p.max_features = params.get_int("features", 32, 1, BVB_ODO_MAX_FEATURES);
   p.min_distance = params.get_int("min_dist", std::max(1, int(std::lround(8 * sx))), 0, 1024);
   p.harris_threshold = params.get_int("harris_thr", 300, 0, 1 << 30);
   p.lk_levels = params.get_int("levels", w >= 320 ? 4 : 3, 1, 4);
-  p.lk_win = params.get_int("win", 9, 3, 15);
+  p.lk_win = params.get_int("win", 7, 3, 15);
   if ((p.lk_win & 1) == 0) throw InputError("parameter win: want an odd size");
   p.lk_max_iter = params.get_int("iters", 10, 1, 100);
   p.lk_eps = 655;  // 0.01 px
@@ -184,7 +184,8 @@ FrameOutput decode(const std::vector<std::vector<uint8_t>> &bufs) {
             {"tracked", double(r[BVB_ODO_R_TRACKED])},
             {"inliers", double(r[BVB_ODO_R_INLIERS])},
             {"flags", double(r[BVB_ODO_R_FLAGS])},
-            {"detected", double(r[BVB_ODO_R_DETECTED])}};
+            {"detected", double(r[BVB_ODO_R_DETECTED])},
+            {"stages", double(r[BVB_ODO_R_STAGES])}};
   return o;
 }
 
@@ -232,7 +233,9 @@ CheckCall make_call(const FrameInput &in, Params &params) {
   static Pose start;
   if (in.index == 0) start = in.truth.pose;
   const bvb_odo_params p = odometry_params(*in.camera, params, start);
-  const int32_t info[BVB_ODO_INFO_WORDS] = {in.index, int32_t(in.truth.left_ticks), int32_t(in.truth.right_ticks)};
+  const int stages = params.get_int("stages", 0, 0, BVB_ODO_STAGES);
+  const int32_t info[BVB_ODO_INFO_WORDS] = {in.index, int32_t(in.truth.left_ticks), int32_t(in.truth.right_ticks),
+                                            stages};
   return odometry_call(*in.grey, in.grey->width, info, p, {}, true, "frame " + std::to_string(in.index));
 }
 
@@ -263,7 +266,7 @@ void check_sequence(Checker &ck, const Sequence &q) {
   for (int f = 0; f < gen.frames(); ++f) {
     const Image grey = gen.render().grey;
     const FrameTruth t = gen.truth();
-    const int32_t info[BVB_ODO_INFO_WORDS] = {f, int32_t(t.left_ticks), int32_t(t.right_ticks)};
+    const int32_t info[BVB_ODO_INFO_WORDS] = {f, int32_t(t.left_ticks), int32_t(t.right_ticks), 0};
     const int stride = grey.width + q.stride_pad;
     CheckCall c = odometry_call(grey, stride, info, p, state, false,
                                 label + " stride " + std::to_string(stride) + " frame " + std::to_string(f));
@@ -312,7 +315,7 @@ CheckCall bench_call(const std::string &, int w, int h, Rng &) {
   for (int f = 0; f < 2; ++f) {
     const Image grey = gen.render().grey;
     const FrameTruth t = gen.truth();
-    const int32_t info[BVB_ODO_INFO_WORDS] = {f, int32_t(t.left_ticks), int32_t(t.right_ticks)};
+    const int32_t info[BVB_ODO_INFO_WORDS] = {f, int32_t(t.left_ticks), int32_t(t.right_ticks), 0};
     c = odometry_call(grey, w, info, p, state, false, std::to_string(w) + "x" + std::to_string(h));
     if (f == 0) {
       std::vector<std::vector<uint8_t>> bufs;
@@ -339,8 +342,9 @@ RunPlan plan_run(RunRequest &req) {
   cam.cam_height_in = req.params.get_int("cam_height_mil", 4000, 100, 64000) / 1000.0;
   cam.tilt_deg = req.params.get_int("tilt_mdeg", 10000, -45000, 45000) / 1000.0;
   const bvb_odo_params p = odometry_params(cam, req.params, Pose{});
+  const int stages = req.params.get_int("stages", 0, 0, BVB_ODO_STAGES);
   req.params.check_all_used();
-  const int32_t info0[BVB_ODO_INFO_WORDS] = {0, 0, 0}, info1[BVB_ODO_INFO_WORDS] = {1, 0, 0};
+  const int32_t info0[BVB_ODO_INFO_WORDS] = {0, 0, 0, 0}, info1[BVB_ODO_INFO_WORDS] = {1, 0, 0, stages};
   CheckCall first = odometry_call(a, a.width, info0, p, {}, false, "run");
   std::vector<std::vector<uint8_t>> bufs;
   for (const auto &bb : first.bufs) bufs.push_back(bb.data);

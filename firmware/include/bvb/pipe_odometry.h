@@ -9,29 +9,49 @@
  * right, y down, pixel centres at integers; the camera on the robot's centre line cam_offset
  * ahead of the axle centre, cam_height above the floor, tilted down by tilt, no roll.
  *
- * ROTATION (equations 3 to 5 of the seed). The column profile of a band of rows
- * (bvb/scanline.h: mean of each column over band_rows rows from band_y0) is compared with the
- * previous frame's over a window of win_w columns from win_x0, minimum overlap rho: the integer
- * shift t minimising the mean absolute difference f(t) = S(t) / (win_w - |t|); t > 0 when the
- * scene moved right, i.e. the robot turned left. Sub-pixel: f at t-1, t, t+1 (exact quotients in
- * Q8) and a parabola through them, delta = (f(t-1) - f(t+1)) / (2 (f(t-1) - 2 f(t) + f(t+1))),
- * |delta| <= 1/2 because f(t) is the minimum; the shift s = t + delta in Q8 pixels (no
- * sub-pixel step when t is at the end of the search range or the curvature is 0).
+ * ROTATION (equations 3 to 5 of the seed). The column profile of a band of rows around the
+ * horizon (bvb/scanline.h: the mean of each column over band_rows rows from band_y0) is
+ * compared with a key profile (an earlier frame's, below) by the scan-line shift search: the
+ * integer shift t minimising the mean absolute difference f(t) = S(t) / (n - |t|) over
+ * |t| <= T = win_w - rho; t > 0 when the scene moved right, i.e. the robot turned left.
+ * Sub-pixel (shift_fit 1): a parabola through f(t-1), f(t), f(t+1) (exact quotients in Q16),
+ * delta = (f(t-1) - f(t+1)) / (2 (f(t-1) - 2 f(t) + f(t+1))), |delta| <= 1/2 because f(t) is
+ * the minimum; s = t + delta in Q8 (no step at the end of the search range or with zero
+ * curvature). shift_fit 0: whole pixels; 2: the equiangular (V) fit, denominator 2 (max(f(t-1),
+ * f(t+1)) - f(t)).
  *   From shift to angle. A turn by dtheta about the vertical axis moves the image point with
  *   normalised coordinates (xn, yn) = ((x - cx) / fx, (y - cy) / fy) horizontally by, to first
  *   order, du = fx dtheta ((1 + xn^2) cos(tilt) - yn sin(tilt)) pixels (the rotational flow of a
- *   camera rotating about the axis (0, -cos tilt, -sin tilt) of its own frame); it does not
- *   depend on depth, so the whole band moves together. Averaged over the band's centre row yc
- *   and the window's columns (mean of xn^2 over them: m2 = ((xm - cx)^2 + (win_w^2 - 1) / 12) /
- *   fx^2, xm the window's centre column), the shift is s = G tan(dtheta) with the gain
- *     G = fx ((1 + m2) cos(tilt) - yc sin(tilt))   (pixels per radian),
- *   and dtheta = atan(s / G), by CORDIC (below). For an untilted camera and a window reduced to
- *   the centre column this is the familiar atan(s / fx); the small-angle form s * HFOV / width
- *   differs from it by the tangent's curvature and is not used. The tangent makes the formula
- *   exact at the image centre on the horizon row (x = cx + fx tan(phi) / cos(tilt) there).
- *   Numbers at 160x120 (fx = 140, tilt 10 deg, band rows 20..51, window 8..151): yc = -0.166,
- *   m2 = 0.088, G = 140 (1.088 x 0.985 + 0.166 x 0.174) = 154.1 px/rad = 2.69 px/deg, so the
- *   simulator's 3 deg per frame turn is an 8.1 pixel shift.
+ *   camera turning about the axis (0, -cos tilt, -sin tilt) of its own frame). It does not
+ *   depend on depth, so the band moves as a whole, but it grows towards the image sides by
+ *   (1 + xn^2): one pixel at the edge of a 60 degree view is 20% less angle than at the centre,
+ *   and a shift found over all columns is a texture-weighted mix of the two.
+ *   rot_bins 1 (the default) therefore compares the profiles in angle bins rather than in
+ *   columns: on the horizon row a point at azimuth phi (from the optical axis's vertical plane)
+ *   is seen at x = cx + fx tan(phi) / cos(tilt), so bin k of width dphi = cos(tilt) / fx rad
+ *   (one pixel at the image centre) is the profile linearly interpolated at that x (a table
+ *   made in frame 0 with CORDIC: bins from the window's first column to its last). A turn
+ *   shifts this angle profile uniformly: dtheta = s dphi, exact on the horizon row for any
+ *   shift, i.e. the atan in "theta = atan(shift / fx)" is applied per column. The band's centre
+ *   row yc is off the horizon; there the flow in bins is cos(tilt) (cos(tilt) - yc sin(tilt))
+ *   per bin of turn at the image centre, so the bin's angle is dphi_row = dphi / that.
+ *   At 160x120 (fx = 140, tilt 10 deg, band rows 21..52, window columns 8..151): 133 bins of
+ *   0.4030 deg, dphi_row = 0.4039 deg, so the scenes' 3 deg turn per frame is 7.43 bins.
+ *   rot_bins 0 compares columns and converts with one gain for the window:
+ *     dtheta = atan(s / G),  G = fx ((1 + m2) cos(tilt) - yc sin(tilt)),
+ *     m2 = ((xm - cx)^2 + (win_w^2 - 1) / 12) / fx^2 (the mean of xn^2 over the window, xm its
+ *     centre column): G = 154.1 px/rad at 160x120. For an untilted camera and a one-column
+ *     window this is atan(s / fx); the small-angle form s * HFOV / width uses the mean angle of
+ *     a pixel across the whole width instead.
+ *   Key profiles. Comparing each frame with the previous one adds one sub-pixel error per frame
+ *   (the parabola is pulled towards whole pixels); comparing with a key profile adds one per
+ *   key. The key is renewed (after this frame's comparison) when the whole-bin shift reaches
+ *   key_shift (so the next frame's shift stays inside the search range), when it changed by
+ *   less than key_still bins since the previous frame (the robot is not turning: driving
+ *   straight, frame-to-frame comparison keeps the profile's change from the robot's own
+ *   forward motion small), after key_frames frames, and when the encoders overrule the
+ *   rotation (fusion). The rotation since the key is exact up to the last comparison, so
+ *   dtheta_vis = key_heading + s dphi_row - heading.
  *
  * TRANSLATION. Harris corners (bvb/harris.h) of the previous frame in the floor region (image
  * rows from floor_y0, where the ground plane is nearer than max_range) are tracked into this
@@ -53,13 +73,23 @@
  * the floor) or on a moving object do not.
  *
  * FUSION with the wheel encoders (fuse = 1; the seed's proposed remedy for a moving object in
- * view). The encoders give, from the tick increments dl, dr since the previous frame, dfwd_enc
- * = (dl + dr) / (2 tpi) and dtheta_enc = (dr - dl) / (tpi wheelbase) radians. This frame's
- * rotation is the encoders' when |dtheta_vis - dtheta_enc| > fuse_rot_tol; its translation is
- * the encoders' when fewer than min_inliers points agree or |dfwd_vis - dfwd_enc| >
- * fuse_trans_tol. Otherwise vision is kept (it does not drift with wheel slip). Without fusion,
- * a frame with fewer than min_inliers inliers has zero translation (the visual estimate is
- * missing). The result's flags say which source each frame used.
+ * view). From the tick increments dl, dr since the previous frame: dfwd_enc = (dl + dr) /
+ * (2 tpi), dtheta_enc = (dr - dl) / (tpi wheelbase) radians. Rotation, two tests:
+ *   per frame: the encoders' dtheta when |dtheta_vis - dtheta_enc| > fuse_rot_tol (a gross
+ *     error: a moving object crossing the band, an ambiguous profile);
+ *   per window of fuse_window frames: the heading change since the window's start against the
+ *     encoders' over the same frames (from the tick counts at its start, so their rounding does
+ *     not add up); when they differ by more than fuse_rot_tol the heading is set to the
+ *     window's start plus the encoders' change (a slow drift: a moving object that biases the
+ *     shift by a tenth of a degree per frame). A new window starts after such a correction or
+ *     after fuse_window frames. The features' rotation compensation uses the frame's own turn
+ *     (after the per-frame test), not the window's correction.
+ * Translation: the encoders' when fewer than min_inliers points agree (no floor in view) or
+ * |dfwd_vis - dfwd_enc| > fuse_trans_tol. Otherwise vision is kept. Both rules trust the
+ * encoders over short spans: wheels that slip (encoders over-counting) make them wrong, and the
+ * window test then moves the heading towards the encoders' error. Without fusion, a frame with
+ * fewer than min_inliers inliers has zero translation (flag BVB_ODO_F_FWD_NONE). The result's
+ * flags say which source each frame used.
  *
  * POSE. heading_mid = heading + dtheta / 2; x += dfwd cos(heading_mid); y += dfwd sin(
  * heading_mid); heading += dtheta (not wrapped). Frame 0 (state->initialised == 0) sets the pose
@@ -83,10 +113,15 @@
  *   int32 (BVB_ODO_R_*). scratch: bvb_odometry_scratch_bytes(params) bytes, 4-byte aligned, any
  *   contents. Returns the number of features tracked into this frame (0 in frame 0), or -1 when
  *   the parameters are out of range (nothing else written).
- *   Limits: 16 <= width <= 1024, 16 <= height <= 1024, stride >= width; fx, fy >= 1 px; 1 <=
- *   band_rows <= 256 inside the frame; 1 <= rho <= win_w inside the frame; 1 <= max_features <=
- *   BVB_ODO_MAX_FEATURES; lk_levels 1..4, lk_win odd 3..15; ncc_radius 1..5, ncc_search 1..16;
- *   tpi >= 1, wheelbase >= 1/16 in. */
+ *   Limits (else -1): 16 <= width, height <= 1024, width <= stride <= 4096; 1 <= fx, fy <= 1024
+ *   px; cam_height 1/16..64 in; tilt -45..45 deg; 1 <= band_rows <= 256 inside the frame; the
+ *   window inside the frame, 1 <= rho <= win_w, at least one bin of overlap; key_shift,
+ *   key_frames >= 1; max_range 1..256 in, and the floor at max_range at least 5 rows above
+ *   the bottom; 1 <= max_features <= BVB_ODO_MAX_FEATURES; lk_levels 1..4, lk_win odd 3..15,
+ *   lk_max_iter 1..100; ncc_radius 1..5, ncc_search 1..16; tpi 1..65536 ticks per inch,
+ *   wheelbase 1/16..256 in, fuse_window >= 1.
+ *   Working set at 160x120 (defaults): state 27 KB (the previous frame and its pyramid),
+ *   scratch 107 KB (the Harris response of the floor region is most of it); both SDRAM. */
 #ifndef BVB_PIPE_ODOMETRY_H
 #define BVB_PIPE_ODOMETRY_H
 
@@ -101,7 +136,14 @@
 #define BVB_ODO_INFO_FRAME 0
 #define BVB_ODO_INFO_LEFT 1
 #define BVB_ODO_INFO_RIGHT 2
-#define BVB_ODO_INFO_WORDS 3
+#define BVB_ODO_INFO_STAGES 3    /* > 0: stop after this many stages (profiling), else all */
+#define BVB_ODO_INFO_WORDS 4
+
+/* Stages: 1 profile (and angle bins), 2 rotation (shift search, fusion), 3 LK pyramid, 4
+ * tracking, 5 floor motion, translation and pose, 6 Harris response, 7 NMS and selection, 8
+ * commit (the state: pose, key profile, features, this frame and its pyramid). A call stopped
+ * early leaves the state as it was (except frame 0's bin table, always the same). */
+#define BVB_ODO_STAGES 8
 
 /* result words */
 #define BVB_ODO_R_X 0            /* pose after this frame, Q16 inches */
@@ -118,7 +160,8 @@
 #define BVB_ODO_R_INLIERS 11
 #define BVB_ODO_R_FLAGS 12       /* BVB_ODO_F_* */
 #define BVB_ODO_R_DETECTED 13    /* features found in this frame for the next one */
-#define BVB_ODO_RESULT_WORDS 14
+#define BVB_ODO_R_STAGES 14      /* stages run */
+#define BVB_ODO_RESULT_WORDS 15
 
 #define BVB_ODO_F_ROT_ENC 1      /* rotation taken from the encoders */
 #define BVB_ODO_F_FWD_ENC 2      /* translation taken from the encoders */
