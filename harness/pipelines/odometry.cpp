@@ -288,17 +288,25 @@ void check(Checker &ck) {
   const std::string seed = std::to_string(rng.uniform(1, 1000));
   std::vector<Sequence> seqs = {
       {"arena=boxes,path=F1.5+L6+R3,ss=1,noise=2,seed=" + seed, {}, 0},
+      // Fusion with tight tolerances, so that every rule fires: the encoders slip and a
+      // moving object crosses the view.
       {"arena=boxes,path=F1+R6,ss=1,mover=cross,slip=0.05,enc_noise=1,seed=" + seed,
-       {{"tracker", "ncc"}, {"fuse", "1"}}, 3},
-      {"arena=boxes,path=L3+F1,ss=1,size=96x72,seed=" + seed, {{"fuse", "1"}, {"levels", "2"}, {"win", "7"}}, 1},
-      {"arena=cylinders,path=F1+L3,ss=1,size=48x36,seed=" + seed,
-       {{"tracker", "ncc"}, {"ncc_r", "2"}, {"ncc_s", "3"}, {"features", "8"}}, 0},
+       {{"tracker", "ncc"}, {"fuse", "1"}, {"rot_tol", "150"}, {"trans_tol", "20"}, {"fuse_window", "2"}}, 3},
+      {"arena=boxes,path=L3+F1,ss=1,size=96x72,seed=" + seed,
+       {{"fuse", "1"}, {"levels", "2"}, {"win", "5"}, {"rot_bins", "0"}, {"shift_fit", "2"}}, 1},
+      // A longer run at a small size: key profiles renewed by shift, by age and while still,
+      // the fusion window, features lost at the borders.
+      {"arena=cylinders,path=F3+L30+F2,ss=1,size=48x36,slip=0.1,seed=" + seed,
+       {{"tracker", "ncc"}, {"ncc_r", "2"}, {"ncc_s", "3"}, {"features", "8"}, {"fuse", "1"},
+        {"rot_tol", "300"}, {"fuse_window", "4"}, {"key_shift", "6"}, {"key_frames", "3"}}, 0},
   };
   if (ck.options().campaign) {
     seqs.push_back({"arena=corridor,path=F1+L3,ss=1,size=320x240,seed=" + seed, {}, 4});
     seqs.push_back({"arena=boxes,path=R3,ss=1,size=640x480,seed=" + seed, {{"tracker", "ncc"}}, 0});
-    seqs.push_back({"arena=boxes,path=F0.5,ss=1,size=33x25,seed=" + seed,
+    seqs.push_back({"arena=boxes,path=F1+L3,ss=1,size=33x25,uyvy=0,seed=" + seed,
                     {{"ncc_r", "1"}, {"ncc_s", "2"}, {"levels", "1"}, {"win", "3"}, {"max_range", "40"}}, 2});
+    seqs.push_back({"arena=boxes,path=F0.5+R3,ss=1,size=16x16,seed=" + seed,
+                    {{"levels", "1"}, {"win", "3"}, {"max_range", "200"}}, 0});
   }
   for (const Sequence &q : seqs) check_sequence(ck, q);
 }
