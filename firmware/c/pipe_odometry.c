@@ -36,14 +36,16 @@ struct odo_ops {
 #define DEG90 (90 * Q16)
 #define DEG180 (180 * Q16)
 #define DEG360 (360 * Q16)
-#define CORDIC_N 22
+#define CORDIC_N 28
 #define CORDIC_K_Q30 652032874
 /* 180 / pi in Q16 degrees per radian: round(180 / pi * 65536). */
 #define RAD_Q16DEG 3754936
 
-static const int32_t atan_q16deg[CORDIC_N] = {
-    2949120, 1740967, 919879, 466945, 234379, 117304, 58666, 29335, 14668, 7334, 3667,
-    1833,    917,     458,    229,    115,    57,     29,    14,    7,     4,    2};
+/* atan(2^-i) in Q24 degrees: round(atan(2^-i) * 180 / pi * 2^24). */
+static const int32_t atan_q24deg[CORDIC_N] = {
+    754974720, 445687602, 235489088, 119537938, 60000934, 30029717, 15018523, 7509720, 3754917, 1877466,
+    938734,    469367,    234684,    117342,    58671,    29335,    14668,    7334,    3667,    1833,
+    917,       458,       229,       115,       57,       29,       14,       7};
 
 /* n / d rounded to nearest (halves away from zero), d > 0. */
 static int64_t div_round(int64_t n, int64_t d) {
@@ -70,17 +72,17 @@ void bvb_odo_sincos(int32_t angle, int32_t *cos_q30, int32_t *sin_q30) {
     a += DEG180;
     neg = 1;
   }
-  int32_t x = CORDIC_K_Q30, y = 0, z = a;
+  int32_t x = CORDIC_K_Q30, y = 0, z = a * 256; /* Q24 degrees, |z| <= 90 * 2^24 */
   for (int32_t i = 0; i < CORDIC_N; ++i) {
     const int32_t xs = x >> i, ys = y >> i;
     if (z >= 0) {
       x -= ys;
       y += xs;
-      z -= atan_q16deg[i];
+      z -= atan_q24deg[i];
     } else {
       x += ys;
       y -= xs;
-      z += atan_q16deg[i];
+      z += atan_q24deg[i];
     }
   }
   *cos_q30 = neg ? -x : x;
@@ -109,14 +111,14 @@ int32_t bvb_odo_atan2(int32_t y, int32_t x) {
     if (vy > 0) {
       vx += ys;
       vy -= xs;
-      z += atan_q16deg[i];
+      z += atan_q24deg[i];
     } else {
       vx -= ys;
       vy += xs;
-      z -= atan_q16deg[i];
+      z -= atan_q24deg[i];
     }
   }
-  return z;
+  return (int32_t)shr_round(z, 8);
 }
 
 /* v * c in Q30, rounded. */

@@ -95,12 +95,13 @@
  * heading_mid); heading += dtheta (not wrapped). Frame 0 (state->initialised == 0) sets the pose
  * to (start_x, start_y, start_heading) and only stores the frame, the profile and the features.
  *
- * TRIGONOMETRY: CORDIC on Q16-degree angles, 22 iterations over a table of atan(2^-i) in Q16
- * degrees (round(atan(2^-i) * 180 / pi * 65536); entries beyond 21 round to 0). Rotation mode
- * gives cos and sin in Q30 (start vector K 2^30, K = prod 1 / sqrt(1 + 2^-2i) = 0.6072529350,
- * round(K 2^30) = 652032874; angles reduced to [-90, 90] degrees first), error < 2^-27. Vectoring
- * mode gives atan2(y, x) for x > 0 (inputs scaled to at most 2^28 first), error < 2 Q16 units
- * (3e-5 degrees). Divisions: 64-bit integer division, truncating, by positive divisors.
+ * TRIGONOMETRY: CORDIC, 28 iterations over a table of atan(2^-i) in Q24 degrees
+ * (round(atan(2^-i) * 180 / pi * 2^24)); angles in and out are Q16 degrees. Rotation mode gives
+ * cos and sin in Q30 (start vector K 2^30, K = prod 1 / sqrt(1 + 2^-2i) = 0.6072529350,
+ * round(K 2^30) = 652032874; angles reduced to [-90, 90] degrees first), within 2^-25 of the
+ * exact values. Vectoring mode gives atan2(y, x) for x > 0 (inputs scaled to [2^27, 2^28)
+ * first), within one Q16 unit (1.5e-5 degrees) for inputs of at least 1000 (host unit tests).
+ * Divisions: integer, truncating, by positive divisors; one 32-bit division per floor point.
  *
  * CALL. bvb_odometry_c and bvb_odometry_asm run the same C orchestration; the first calls the C
  * kernels, the second (Blackfin only) the assembly ones where they exist (scan-line profile and
