@@ -579,7 +579,7 @@ static void rotation(const struct odo_ops *ops, const struct bvb_odo_params *p, 
   /* Over the window the encoders' heading change comes from whole tick counts, so their
    * rounding does not add up: a slow visual drift (a moving object in the band) shows. */
   const int32_t e = enc_angle(left - st->win_left, right - st->win_right, p);
-  if (iabs(st->heading + f->dth - st->win_heading - e) > p->fuse_rot_tol) {
+  if (iabs(e) <= p->fuse_rot_tol && iabs(st->heading + f->dth - st->win_heading - e) > p->fuse_rot_tol) {
     f->dth = st->win_heading + e - st->heading; /* this frame's turn and the window's correction */
     f->flags |= BVB_ODO_F_ROT_ENC | BVB_ODO_F_ROT_WIN;
   }

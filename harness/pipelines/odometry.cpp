@@ -225,6 +225,25 @@ std::vector<std::string> summarize(const std::vector<FrameRecord> &fr) {
   std::snprintf(b, sizeof b, "frames using the encoders: rotation %d, translation %d; without a visual translation %d",
                 rot_enc, fwd_enc, fwd_none);
   lines.push_back(b);
+  // Dead reckoning from the encoders alone, for comparison (the firmware's per-frame values).
+  if (!fr.empty()) {
+    Pose e = fr[0].in.truth.pose;
+    for (size_t i = 1; i < fr.size(); ++i) {
+      double dfwd = 0, dth = 0;
+      for (const auto &d : fr[i].out.diag) {
+        if (d.first == "dfwd_enc_in") dfwd = d.second;
+        if (d.first == "dtheta_enc_deg") dth = d.second;
+      }
+      const double hm = deg2rad(e.heading_deg + dth / 2);
+      e.x_in += dfwd * std::cos(hm);
+      e.y_in += dfwd * std::sin(hm);
+      e.heading_deg += dth;
+    }
+    const Pose &t = fr.back().in.truth.pose;
+    std::snprintf(b, sizeof b, "encoders alone: final pose error %.2f in, %.2f deg", std::hypot(e.x_in - t.x_in, e.y_in - t.y_in),
+                  e.heading_deg - t.heading_deg);
+    lines.push_back(b);
+  }
   return lines;
 }
 
