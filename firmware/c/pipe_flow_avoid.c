@@ -1,0 +1,148 @@
+/* Optical-flow obstacle avoidance (bvb/pipeline.h): Horn-Schunck flow over a band of rows, the
+ * balance of the flow magnitudes in the left and right halves, frames after a turn discarded. */
+#include "bvb/pipeline.h"
+
+static int32_t iabs(int32_t v) { return v < 0 ? -v : v; }
+
+/* dst (w/s x rows/s, packed) = the band averaged over s x s blocks, rounded half up (s = 1
+ * copies). Returns the sum of dst. */
+static int32_t scale_band(const uint8_t *band, int32_t stride, int32_t width, int32_t rows, int32_t s,
+                          uint8_t *dst) {
+  const int32_t ws = width / s, rs = rows / s, shift = s == 8 ? 6 : s == 4 ? 4 : s == 2 ? 2 : 0;
+  int32_t total = 0;
+  for (int32_t y = 0; y < rs; ++y) {
+    for (int32_t x = 0; x < ws; ++x) {
+      int32_t sum = 0;
+      for (int32_t j = 0; j < s; ++j)
+        for (int32_t i = 0; i < s; ++i) sum += band[(y * s + j) * stride + x * s + i];
+      const int32_t v = (sum + ((1 << shift) >> 1)) >> shift;
+      dst[y * ws + x] = (uint8_t)v;
+      total += v;
+    }
+  }
+  return total;
+}
+
+/* Sum of min(|u| + |v|, BVB_FLOW_AVOID_MAX_MAG) over columns [x0, x1) of every row. */
+static int32_t flow_sum(const int16_t *uv, int32_t width, int32_t rows, int32_t x0, int32_t x1) {
+  int32_t sum = 0;
+  for (int32_t y = 0; y < rows; ++y) {
+    const int16_t *r = uv + 2 * (y * width);
+    for (int32_t x = x0; x < x1; ++x) {
+      int32_t m = iabs(r[2 * x]) + iabs(r[2 * x + 1]);
+      if (m > BVB_FLOW_AVOID_MAX_MAG) m = BVB_FLOW_AVOID_MAX_MAG;
+      sum += m;
+    }
+  }
+  return sum;
+}
+
+int32_t bvb_pipe_flow_avoid_run(const struct bvb_flow_avoid_kernels *k, const uint8_t *frame,
+                                int32_t width, int32_t height, int32_t stride,
+                                const struct bvb_pipe_frame *info, const struct bvb_flow_avoid_params *p,
+                                struct bvb_flow_avoid_state *state, struct bvb_pipe_result *out,
+                                int16_t *coef, int16_t *flow_a, int16_t *flow_b) {
+  (void)height;
+  const int32_t limit = info->stages > 0 ? info->stages : BVB_FLOW_AVOID_STAGES;
+  const int32_t first = info->index == 0;
+  const int32_t s = p->scale, ws = width / s, rs = p->band_rows / s;
+  const int32_t slot_bytes = BVB_FLOW_AVOID_SLOT_BYTES(width, p->band_rows, s);
+  uint8_t *slots = (uint8_t *)(state + 1);
+  const int32_t prev_slot = first ? 0 : state->slot, cur_slot = 1 - prev_slot;
+  uint8_t *prev = slots + prev_slot * slot_bytes, *cur = slots + cur_slot * slot_bytes;
+  int32_t stage = 0;
+
+  out->decision = BVB_PIPE_STOP;
+  out->has_pose = 0;
+  out->x_q16 = out->y_q16 = out->heading_q16 = 0;
+  for (int32_t i = 0; i < BVB_PIPE_DIAG; ++i) out->diag[i] = 0;
+
+  /* 1: what the robot did since the previous frame, whether a turn is under way; the band */
+  const int32_t dl = first ? 0 : info->left_ticks - state->left_ticks;
+  const int32_t dr = first ? 0 : info->right_ticks - state->right_ticks;
+  int32_t turn = first ? 0 : state->turn, turn_left = first ? 0 : state->turn_left;
+  int32_t latch = first ? 0 : state->latch;
+  const int32_t have_prev = first ? 0 : state->have_prev;
+  const int32_t translated = dl > 0 && dr > 0 && iabs(dl - dr) <= p->rot_ticks;
+  const int32_t bright = scale_band(frame + p->band_top * stride, stride, width, p->band_rows, s, cur) / (ws * rs);
+  int32_t mode, decision = BVB_PIPE_FORWARD, mean_l = -1, mean_r = -1;
+  if (turn_left > 0) {
+    mode = BVB_FLOW_MODE_TURN;
+    decision = turn;
+    --turn_left;
+  } else if (!translated || !have_prev) {
+    mode = BVB_FLOW_MODE_PROBE;
+  } else if (iabs(bright - state->bright) > p->light_tol) {
+    mode = BVB_FLOW_MODE_LIGHT;
+  } else {
+    mode = BVB_FLOW_MODE_FLOW;
+  }
+  out->diag[BVB_FLOW_DIAG_MODE] = mode;
+  out->diag[BVB_FLOW_DIAG_DLEFT] = dl;
+  out->diag[BVB_FLOW_DIAG_DRIGHT] = dr;
+  if (++stage > limit) goto stopped;
+
+  /* 2, 3: the flow from the previous band to this one */
+  int16_t *uv = flow_a;
+  if (mode == BVB_FLOW_MODE_FLOW) {
+    k->hs_prepare(prev, cur, ws, rs, ws, p->alpha2_q4, coef);
+    if (++stage > limit) goto stopped;
+    int32_t *z = (int32_t *)flow_a;
+    for (int32_t i = 0; i < ws * rs; ++i) z[i] = 0;
+    for (int32_t n = 0; n < p->iterations; ++n) {
+      int16_t *next = uv == flow_a ? flow_b : flow_a;
+      k->hs_iterate(coef, uv, 4 * ws, next, 4 * ws, ws, rs);
+      uv = next;
+    }
+    if (++stage > limit) goto stopped;
+  } else {
+    stage += 2;
+    if (stage > limit) goto stopped;
+  }
+
+  /* 4: the balance rule */
+  if (mode == BVB_FLOW_MODE_FLOW) {
+    const int32_t half = ws / 2;
+    mean_l = flow_sum(uv, ws, rs, 0, half) / (half * rs);
+    mean_r = flow_sum(uv, ws, rs, half, ws) / ((ws - half) * rs);
+    const int32_t stalled = mean_l <= p->stall_q9 && mean_r <= p->stall_q9;
+    if (mean_l <= p->thresh_q9 && mean_r <= p->thresh_q9 && !stalled) {
+      decision = BVB_PIPE_FORWARD;
+      latch = 0;
+    } else {
+      if (stalled) mode = BVB_FLOW_MODE_STALL;
+      if (!latch) latch = mean_l <= mean_r ? BVB_PIPE_LEFT : BVB_PIPE_RIGHT;
+      decision = turn = latch;
+      turn_left = p->turn_frames - 1;
+    }
+  }
+  out->diag[BVB_FLOW_DIAG_MODE] = mode;
+  ++stage;
+  state->left_ticks = info->left_ticks;
+  state->right_ticks = info->right_ticks;
+  state->turn = turn_left > 0 ? turn : 0;
+  state->turn_left = turn_left;
+  state->latch = latch;
+  state->have_prev = 1;
+  state->slot = cur_slot;
+  state->bright = bright;
+  state->frames = first ? 1 : state->frames + 1;
+  out->decision = decision;
+
+stopped:
+  out->diag[BVB_FLOW_DIAG_STAGES] = stage > limit ? limit : stage;
+  out->diag[BVB_FLOW_DIAG_LEFT] = mean_l;
+  out->diag[BVB_FLOW_DIAG_RIGHT] = mean_r;
+  out->diag[BVB_FLOW_DIAG_LATCH] = latch;
+  return out->decision;
+}
+
+static const struct bvb_flow_avoid_kernels c_kernels = {bvb_hs_prepare_c, bvb_hs_iterate_c};
+
+int32_t bvb_pipe_flow_avoid_c(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,
+                              const struct bvb_pipe_frame *info, const struct bvb_flow_avoid_params *p,
+                              struct bvb_flow_avoid_state *state, struct bvb_pipe_result *out,
+                              int16_t *coef, int16_t *flow_a, int16_t *flow_b) {
+  return bvb_pipe_flow_avoid_run(&c_kernels, frame, width, height, stride, info, p, state, out, coef,
+                                 flow_a, flow_b);
+}
