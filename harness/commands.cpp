@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 
+#include "flow/hs_accuracy_cli.h"
 #include "pipeline/runner.h"
 #include "scene/scene_cli.h"
 
@@ -17,6 +18,7 @@ struct ExtraCommand {
 static const ExtraCommand kCommands[] = {
     {"scene", "generate a synthetic scene with ground truth (or check one)", scene_command},
     {"pipeline", "run a vision pipeline frame by frame (bfbench pipeline --help)", pipeline_command},
+    {"hs-accuracy", "Horn-Schunck fixed point vs double vs ground truth (EPE, AE)", hs_accuracy_command},
 };
 
 int extra_command(const std::string &name, int argc, char **argv, bool *handled) {

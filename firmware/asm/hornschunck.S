@@ -1,0 +1,733 @@
+/* Horn-Schunck optical flow in Blackfin assembly (bvb/hornschunck.h: definitions, Q formats,
+ * rounding): bvb_hs_iterate_asm, bvb_hs_prepare_asm and bvb_hornschunck_asm, bit-exact with the C
+ * reference, which is written one Blackfin operation per helper so that these instruction
+ * sequences reproduce it.
+ *
+ * CYCLES (bfbench bench, simulator cycles per call, empty-call overhead subtracted; c/px per frame
+ * pixel; C = the reference built with bfin-elf-gcc -O2):
+ *                    160x120               320x240               640x480
+ *   hs_iterate       195,564  (10.19)      775,045  (10.09)      3,086,004  (10.05)   C ~304 c/px
+ *   hs_prepare       343,014  (17.87)    1,338,774  (17.43)      5,288,694  (17.22)   C ~345 c/px
+ *   hornschunck    2,318,654 (120.76)    9,167,184 (119.36)     36,457,814 (118.68)   N = 10,
+ *                                                                          C ~3380 c/px
+ * LOWER BOUNDS. One issue per cycle: one 32-bit ALU/MAC instruction with up to two loads, or one
+ *   load and one store; 16-bit instructions (pointer moves, lone loads/stores) issue alone.
+ *   Iteration, 10 per pixel: ALU/MAC instructions 2 saturating dual adds (cr = T + B, e1 = ML + MR;
+ *     cl and c0 are earlier pixels' cr), 4 dual MACs (the 1/12 and 1/6 weighted sums for u and v
+ *     at once; the last extracts ubar, vbar), 1 dual S2RND multiply (gx' ubar, gy' vbar), 2
+ *     saturating adds (+ each other, + gt'), 1 dual integer MAC (acc - e g', extracted: u', v').
+ *     Memory: 6 loads (T, B, M(x-1), M(x+1), (gy':gx'), gt') and 1 store, 3.5 issues, ride along.
+ *     Measured 10.05-10.19: the rest is per row (first and last pixel, pointers, ~30 cycles).
+ *   Prepare, 17 per pixel, in three passes per row y (the intermediates live in the row's own
+ *     6-byte-per-pixel coefficient area, overwritten in place):
+ *     A  1: r = I2 + I1 and n = I2 - I1 of row y+1 of both frames, BYTEOP16P/M: 2 instructions
+ *        but 4 word stores per 4 columns (store bound; the source words slide with the (R)
+ *        option so that each group loads 2 words).
+ *     B  2: s = r(y) + r(y+1) and p = r(y+1) - r(y) (one quad add/subtract per 2 columns),
+ *        q = n(y) + n(y+1), C = (p:s) by PACK: 8 ALU instructions per 4 columns.
+ *     C 14: per pixel 10 ALU/MAC (G = C(x+1) +|- C(x); half of (gt1:gt0) = q +|+ q shifted;
+ *        D = alpha2 + gx^2 + gy^2 in 3 (two integer MACs and A0 += A1); SIGNBITS; the index
+ *        shift D >> (20 - 2k); G <<= k (V); gt shifted by k - 5; the S2RND multiply of G and half
+ *        of the one of (gt1:gt0)) + 4 pointer instructions that cannot issue in parallel:
+ *        P0 = SIGNBITS, P0 = counts + 4 P0 (a 12-entry table gives k, k - 5 and 2k - 20 for
+ *        three loads riding along, cheaper than computing them), P1 = index,
+ *        P1 = rsqrt table + 2 P1.
+ *     Measured 17.22-17.87: ~138 cycles per row of set-up, branches and the border pixels.
+ *   Full kernel: 1 (zeroing the start flow, a store per pixel) + 17 + 10 N: 118 at N = 10;
+ *     measured 118.68-120.76.
+ *   Each is at least 19x faster than the C (prepare 19.3x, iteration 29.8x, full 28.0x at
+ *   160x120).
+ *
+ * MEMORY. The kernels work wherever the caller puts the buffers. At the robot's sizes frames,
+ *   coefficients and flow live in SDRAM (working set 14 bytes per pixel: 263 KB at 160x120, past
+ *   the 64 KB of L1 data); the bench places them there. The simulator charges no SDRAM latency,
+ *   so these counts are those of data in L1; on the chip the row-band DMA scheme of the header
+ *   (22 bytes x width per iteration band in L1) would be needed to approach them. The count table
+ *   is in L1 data bank A; the rsqrt table is the C reference's (.rodata).
+ *
+ * READS stay inside the buffers: frame rows are read as aligned words only up to the word that
+ *   holds the row's last pixel; the flow and coefficient rows only inside their width.
+ */
+
+/* ---------------------------------------------------------------------------------------------
+ * bvb_hs_iterate_asm(coef, uv_in, in_stride, uv_out, out_stride, width, height)
+ * --------------------------------------------------------------------------------------------- */
+
+/* One interior pixel. Column sums cl = ra, c0 = rb (carried), cr = rc (computed here); on entry
+ * R0 = G and R3.L = e of the previous pixel, A1:A0 its exact sums, I2 at M(x-1). */
+.macro HS_PIX ra, rb, rc
+	R3.H = (A1 -= R3.L * R0.H), R3.L = (A0 -= R3.L * R0.L) (IH) || R0 = [I0++] || R1 = [I1++];
+	\rc = R0 +|+ R1 (S) || [P1++] = R3 || R0 = [I2 ++ M0];
+	A1 = \ra\().H * R7.L, A0 = \ra\().L * R7.L || R1 = [I2 ++ M1];
+	R2 = R0 +|+ R1 (S) || R1 = W[P0++] (X) || R0 = [I3++];
+	A1 += \rc\().H * R7.L, A0 += \rc\().L * R7.L;
+	A1 += R2.H * R7.H, A0 += R2.L * R7.H;
+	R3.H = (A1 += \rb\().H * R7.H), R3.L = (A0 += \rb\().L * R7.H);
+	R3.H = R3.H * R0.H, R3.L = R3.L * R0.L (S2RND);
+	R3.L = R3.L + R3.H (S);
+.endm
+
+/* The rows of one call, for (width - 2) mod 3 == m: pixel 0 leaves c(0), c(1) in x0, x1, the
+ * registers the first rotation step after it expects. */
+.macro HS_ROWS m, x0, x1
+	lsetup (.Lit_row\m, .Lit_row_end\m) lc1;
+.Lit_row\m:
+	i0 = b2;
+	r0 = p3;
+	r1 = b0;
+	r0 = r0 + r1;
+	r1 = b3;
+	r0 = min (r0, r1);
+	i1 = r0;
+	i2 = p3;
+	i3 = p4;
+	p0 = p4 + fp;
+	p1 = p5;
+	/* Pixel 0: left neighbours are the pixel itself. */
+	mnop || r0 = [i0++] || r1 = [i1++];
+	\x0 = r0 +|+ r1 (s) || r0 = [i0++] || r1 = [i1++];
+	\x1 = r0 +|+ r1 (s) || r0 = [i2 ++ m2];
+	a1 = \x0\().h * r7.l, a0 = \x0\().l * r7.l || r1 = [i2 ++ m1];
+	r2 = r0 +|+ r1 (s) || r1 = w[p0++] (x) || r0 = [i3++];
+	a1 += \x1\().h * r7.l, a0 += \x1\().l * r7.l;
+	a1 += r2.h * r7.h, a0 += r2.l * r7.h;
+	r3.h = (a1 += \x0\().h * r7.h), r3.l = (a0 += \x0\().l * r7.h);
+	r3.h = r3.h * r0.h, r3.l = r3.l * r0.l (s2rnd);
+	r3.l = r3.l + r3.h (s);
+	r3.l = r3.l + r1.l (s);
+.if \m == 1
+	HS_PIX r6, r4, r5
+	r3.l = r3.l + r1.l (s);
+.endif
+.if \m == 2
+	HS_PIX r5, r6, r4
+	r3.l = r3.l + r1.l (s);
+	HS_PIX r6, r4, r5
+	r3.l = r3.l + r1.l (s);
+.endif
+	cc = p2 == 0;
+	if cc jump .Lit_last\m;
+	lsetup (.Lit_pix\m, .Lit_pix_end\m) lc0 = p2;
+.Lit_pix\m:
+	HS_PIX r4, r5, r6
+	r3.l = r3.l + r1.l (s);
+	HS_PIX r5, r6, r4
+	r3.l = r3.l + r1.l (s);
+	HS_PIX r6, r4, r5
+.Lit_pix_end\m:
+	r3.l = r3.l + r1.l (s);
+.Lit_last\m:
+	/* Pixel width-1: cl = R4, c0 = R5 and cr = c0. */
+	r3.h = (a1 -= r3.l * r0.h), r3.l = (a0 -= r3.l * r0.l) (ih) || r0 = [i2 ++ m2];
+	a1 = r4.h * r7.l, a0 = r4.l * r7.l || [p1++] = r3 || r1 = [i2];
+	r2 = r0 +|+ r1 (s) || r1 = w[p0++] (x) || r0 = [i3++];
+	a1 += r5.h * r7.l, a0 += r5.l * r7.l;
+	a1 += r2.h * r7.h, a0 += r2.l * r7.h;
+	r3.h = (a1 += r5.h * r7.h), r3.l = (a0 += r5.l * r7.h);
+	r3.h = r3.h * r0.h, r3.l = r3.l * r0.l (s2rnd);
+	r3.l = r3.l + r3.h (s);
+	r3.l = r3.l + r1.l (s);
+	r3.h = (a1 -= r3.l * r0.h), r3.l = (a0 -= r3.l * r0.l) (ih);
+	[p1] = r3;
+	/* Next row: top = this row, then advance the three row pointers. */
+	b2 = p3;
+	r0 = p3;
+	r1 = b0;
+	r0 = r0 + r1;
+	p3 = r0;
+	r0 = p4;
+	r1 = m3;
+	r0 = r0 + r1;
+	p4 = r0;
+	r0 = p5;
+	r1 = b1;
+	r0 = r0 + r1;
+.Lit_row_end\m:
+	p5 = r0;
+.endm
+
+	.section .l1.text, "ax"
+	.align 4
+	.global _bvb_hs_iterate_asm
+	.type _bvb_hs_iterate_asm, STT_FUNC
+_bvb_hs_iterate_asm:
+	[--sp] = (r7:4, p5:3);
+	[--sp] = fp;
+	/* Arguments 4-7 sit 32 bytes further up after the saves. */
+	p4 = r0;
+	p3 = r1;
+	b0 = r2;
+	b2 = r1;
+	p5 = [sp + 44];
+	r0 = [sp + 48];
+	b1 = r0;
+	r6 = [sp + 52];
+	r5 = [sp + 56];
+	lc1 = r5;
+	r0 = r5;
+	r0 += -1;
+	r0 *= r2;
+	r0 = r0 + r1;
+	b3 = r0;
+	r0 = r6 << 2;
+	fp = r0;
+	r1 = r6 << 1;
+	r0 = r0 + r1;
+	r1 = 1;
+	r1 = r1 & r6;
+	r1 = r1 << 1;
+	r0 = r0 + r1;
+	m3 = r0;
+	/* n = (width - 2) / 3 rotations of the loop, m = (width - 2) mod 3 pixels before it. */
+	r0 = r6;
+	r0 += -2;
+	r1.l = 0xaaab;
+	r1.h = 0;
+	r2 = r0;
+	r2 *= r1;
+	r2 >>= 17;
+	p2 = r2;
+	r1 = r2 << 1;
+	r1 = r1 + r2;
+	r0 = r0 - r1;
+	r1 = 8;
+	m0 = r1;
+	r1 = -4;
+	m1 = r1;
+	r1 = 4;
+	m2 = r1;
+	r7.l = 2731;
+	r7.h = 5461;
+	cc = r0 == 0;
+	if cc jump .Lit_m0;
+	cc = r0 == 1;
+	if cc jump .Lit_m1;
+	HS_ROWS 2, r5, r6
+	jump .Lit_done;
+.Lit_m1:
+	HS_ROWS 1, r6, r4
+	jump .Lit_done;
+.Lit_m0:
+	HS_ROWS 0, r4, r5
+.Lit_done:
+	fp = [sp++];
+	(r7:4, p5:3) = [sp++];
+	rts;
+	.size _bvb_hs_iterate_asm, . - _bvb_hs_iterate_asm
+
+/* ---------------------------------------------------------------------------------------------
+ * bvb_hs_prepare_asm(i1, i2, width, height, stride, alpha2_q4, coef)
+ * --------------------------------------------------------------------------------------------- */
+
+/* Shift counts by SIGNBITS(D), D in [2^10, 2^22) so SIGNBITS in 9..20: k = (sb - 1) >> 1 with
+ * D 4^k in [2^28, 2^30); word 1 = (k - 5 : k), word 2 = 2k - 20 (the right shift giving the
+ * table index D 4^k >> 20). */
+	.section .l1.data.a, "aw"
+	.align 4
+.Lhs_counts:
+	.int 0xffff0004, 0xffff0004, 0x00000005, 0x00000005, 0x00010006, 0x00010006
+	.int 0x00020007, 0x00020007, 0x00030008, 0x00030008, 0x00040009, 0x00040009
+	.int -12, -12, -10, -10, -8, -8, -6, -6, -4, -4, -2, -2
+
+/* Stack frame of bvb_hs_prepare_asm (FP-relative locals). */
+#define HS_PITCH   -4   /* coefficient row pitch, bytes */
+#define HS_W4      -8   /* 4 * width: offset of the gt row */
+#define HS_NGF     -12  /* full groups of 4 columns */
+#define HS_TAIL    -16  /* width - 4 * groups */
+#define HS_NPAIR   -20  /* full pairs of phase 2: (width - 1) >> 1 */
+#define HS_ODD     -24  /* width & 1 */
+#define HS_FRAME   24
+
+/* Pass A: per-row frame sums and differences of one row of both frames, r = I2 + I1 and
+ * n = I2 - I1 per column, into the row's coefficient area: per group of 4 columns the words
+ * (r1:r0) (r3:r2) (n1:n0) (n3:n2), then one word (n:r) per remaining column.
+ * In: R0 = frame-1 row, R1 = frame-2 row, P0 = destination.
+ * BYTEOP16P/M take 4 bytes at offset I0 & 3 (frame 2) and I1 & 3 (frame 1) from two words of
+ * each frame, R1:0 and R3:2. Groups alternate: the word a group shares with the next stays, the
+ * other is replaced, and the next group reads the pair reversed (R). Words are read only up to
+ * the last one holding a pixel of the row: the group after the last one needs its second word
+ * only when the row is misaligned (M1, M3 = 4 - that word's offset). */
+.macro HS_PA_LOOP tag
+	lsetup (.Lpa_two\tag, .Lpa_two_end\tag) lc0 = p3;
+.Lpa_two\tag:
+	(r7, r6) = byteop16m (r1:0, r3:2) || [p0++] = r4 || r0 = [i3++];
+	mnop || [p0++] = r5 || r2 = [i2++];
+	[p0++] = r6;
+	(r5, r4) = byteop16p (r1:0, r3:2) (r) || [p0++] = r7;
+	(r7, r6) = byteop16m (r1:0, r3:2) (r) || [p0++] = r4 || r1 = [i3++];
+	mnop || [p0++] = r5 || r3 = [i2++];
+	[p0++] = r6;
+.Lpa_two_end\tag:
+	(r5, r4) = byteop16p (r1:0, r3:2) || [p0++] = r7;
+.endm
+
+.macro HS_PASS_A tag
+	i1 = r0;                        /* BYTEOP alignment: operand 2 = frame 1 */
+	i0 = r1;                        /* operand 1 = frame 2 */
+	r2 = -4;
+	r3 = r0 & r2;
+	i2 = r3;                        /* aligned word streams */
+	r3 = r1 & r2;
+	i3 = r3;
+	/* 4 if the row is misaligned (a group spans two words), else 0 */
+	r2 = 3;
+	r3 = r0 & r2;
+	r3 += 3;
+	r2 = 4;
+	r3 = r3 & r2;
+	m0 = r3;
+	r3 = r2 - r3;
+	m1 = r3;
+	r2 = 3;
+	r3 = r1 & r2;
+	r3 += 3;
+	r2 = 4;
+	r3 = r3 & r2;
+	m2 = r3;
+	r3 = r2 - r3;
+	m3 = r3;
+	p3 = [fp + HS_NGF];
+	r2 = p3;
+	r3 = r2 << 2;
+	r0 = r0 + r3;
+	r1 = r1 + r3;
+	p1 = r0;                        /* byte pointers for the remaining columns */
+	p2 = r1;
+	cc = r2 <= 1;
+	if cc jump .Lpa_one\tag;
+	mnop || r0 = [i3++] || r2 = [i2++];
+	mnop || r1 = [i3++] || r3 = [i2++];
+	(r5, r4) = byteop16p (r1:0, r3:2);
+	r6 = p3;
+	cc = bittst (r6, 0);
+	if cc jump .Lpa_odd\tag;
+	/* Even count: (groups - 2) / 2 looped pairs, then a normal group and a reversed one. */
+	r6 += -2;
+	r6 >>= 1;
+	p3 = r6;
+	cc = r6 == 0;
+	if cc jump .Lpa_even_end\tag;
+	HS_PA_LOOP e\tag
+.Lpa_even_end\tag:
+	i3 -= m3;
+	i2 -= m1;
+	(r7, r6) = byteop16m (r1:0, r3:2) || [p0++] = r4 || r0 = [i3];
+	mnop || [p0++] = r5 || r2 = [i2];
+	[p0++] = r6;
+	(r5, r4) = byteop16p (r1:0, r3:2) (r) || [p0++] = r7;
+	(r7, r6) = byteop16m (r1:0, r3:2) (r) || [p0++] = r4;
+	jump .Lpa_store3\tag;
+.Lpa_odd\tag:
+	/* Odd count: (groups - 3) / 2 looped pairs, a normal group, a reversed one, a normal one. */
+	r6 += -3;
+	r6 >>= 1;
+	p3 = r6;
+	cc = r6 == 0;
+	if cc jump .Lpa_odd_end\tag;
+	HS_PA_LOOP o\tag
+.Lpa_odd_end\tag:
+	(r7, r6) = byteop16m (r1:0, r3:2) || [p0++] = r4 || r0 = [i3++];
+	mnop || [p0++] = r5 || r2 = [i2++];
+	[p0++] = r6;
+	(r5, r4) = byteop16p (r1:0, r3:2) (r) || [p0++] = r7;
+	i3 -= m3;
+	i2 -= m1;
+	(r7, r6) = byteop16m (r1:0, r3:2) (r) || [p0++] = r4 || r1 = [i3];
+	mnop || [p0++] = r5 || r3 = [i2];
+	[p0++] = r6;
+	(r5, r4) = byteop16p (r1:0, r3:2) || [p0++] = r7;
+	(r7, r6) = byteop16m (r1:0, r3:2) || [p0++] = r4;
+	jump .Lpa_store3\tag;
+.Lpa_one\tag:
+	/* One group (or none): both words of it, the second only if the row is misaligned. */
+	cc = r2 == 0;
+	if cc jump .Lpa_tail\tag;
+	mnop || r0 = [i3 ++ m2] || r2 = [i2 ++ m0];
+	mnop || r1 = [i3 ++ m3] || r3 = [i2 ++ m1];
+	(r5, r4) = byteop16p (r1:0, r3:2);
+	(r7, r6) = byteop16m (r1:0, r3:2) || [p0++] = r4;
+.Lpa_store3\tag:
+	[p0++] = r5;
+	[p0++] = r6;
+	[p0++] = r7;
+.Lpa_tail\tag:
+	p3 = [fp + HS_TAIL];
+	cc = p3 == 0;
+	if cc jump .Lpa_done\tag;
+	lsetup (.Lpa_col\tag, .Lpa_col_end\tag) lc0 = p3;
+.Lpa_col\tag:
+	r0 = b[p1++] (z);
+	r1 = b[p2++] (z);
+	r2 = r1 + r0, r3 = r1 - r0;
+	r2 = pack (r3.l, r2.l);
+.Lpa_col_end\tag:
+	[p0++] = r2;
+.Lpa_done\tag:
+.endm
+
+/* Pass B: column sums s, vertical differences p and time differences q of the row pair from
+ * the two rows' pass-A data (I2: this row, I3: the row below, or this row again on the last):
+ * C = (p:s) per column into the row's first 4w bytes (in place), q into its gt row (P1). */
+.macro HS_PASS_B tag
+	p3 = [fp + HS_NGF];
+	cc = p3 == 0;
+	if cc jump .Lpb_tail\tag;
+	p3 += -1;
+	mnop || r0 = [i2++] || r2 = [i3++];
+	r2 = r2 +|+ r0, r0 = r2 -|- r0 || r1 = [i2++] || r3 = [i3++];
+	cc = p3 == 0;
+	if cc jump .Lpb_last\tag;
+	lsetup (.Lpb_grp\tag, .Lpb_grp_end\tag) lc0 = p3;
+.Lpb_grp\tag:
+	r3 = r3 +|+ r1, r1 = r3 -|- r1 || r4 = [i2++] || r6 = [i3++];
+	r6 = r6 +|+ r4 || r5 = [i2++] || r7 = [i3++];
+	r7 = r7 +|+ r5 || [p1++] = r6;
+	r4 = pack (r0.l, r2.l) || [p1++] = r7;
+	r5 = pack (r0.h, r2.h) || [p0++] = r4 || r0 = [i2++];
+	r6 = pack (r1.l, r3.l) || [p0++] = r5 || r2 = [i3++];
+	r7 = pack (r1.h, r3.h) || [p0++] = r6 || r1 = [i2++];
+.Lpb_grp_end\tag:
+	r2 = r2 +|+ r0, r0 = r2 -|- r0 || [p0++] = r7 || r3 = [i3++];
+.Lpb_last\tag:
+	r3 = r3 +|+ r1, r1 = r3 -|- r1 || r4 = [i2++] || r6 = [i3++];
+	r6 = r6 +|+ r4 || r5 = [i2++] || r7 = [i3++];
+	r7 = r7 +|+ r5 || [p1++] = r6;
+	r4 = pack (r0.l, r2.l) || [p1++] = r7;
+	r5 = pack (r0.h, r2.h) || [p0++] = r4;
+	r6 = pack (r1.l, r3.l) || [p0++] = r5;
+	r7 = pack (r1.h, r3.h) || [p0++] = r6;
+	[p0++] = r7;
+.Lpb_tail\tag:
+	p3 = [fp + HS_TAIL];
+	cc = p3 == 0;
+	if cc jump .Lpb_done\tag;
+	lsetup (.Lpb_col\tag, .Lpb_col_end\tag) lc0 = p3;
+.Lpb_col\tag:
+	mnop || r0 = [i2++] || r1 = [i3++];
+	r2 = r1 +|+ r0, r3 = r1 -|- r0;
+	r3 = pack (r3.l, r2.l);
+	r2 = r2 >> 16 || [p0++] = r3;
+.Lpb_col_end\tag:
+	w[p1++] = r2;
+.Lpb_done\tag:
+.endm
+
+/* Phase 2, steps 2-28 of a pixel pair (A = x, B = x + 1); step 1 (GA = C(x+1) +|- C(x)) is
+ * done before. On entry R0 = GA, R4 = C(x+1), R1 = C(x+2), R6 = (q(x+1):q(x)),
+ * R5 = (q(x+2):q(x+1)); R7.H = 0. With ahead = 1 the loads for the next pair ride along. */
+.macro HS_PAIR ahead
+	r1 = r1 +|- r4;                                 /* GB = (gy:gx) of B */
+	r2 = r6 +|+ r5;                                 /* (gtB:gtA) */
+	a0 = r0.l * r0.l (is);
+	a0 += r0.h * r0.h (is);
+	r6 = (a0 += a1);                                /* D of A */
+	r7.l = signbits r6;
+	p0 = r7;
+	p0 = p4 + (p0 << 2);
+	a0 = r1.l * r1.l (is) || r4 = [p0 + 48];        /* c */
+	a0 += r1.h * r1.h (is) || r5 = [p0];            /* k */
+	r6 = lshift r6 by r4.l || r4 = w[p0 + 2] (x);   /* table index; t */
+	p1 = r6;
+	p1 = p5 + (p1 << 1);
+	r6 = (a0 += a1) || r3.l = w[p1];                /* D of B; S of A */
+	r7.l = signbits r6;
+	p0 = r7;
+	p0 = p4 + (p0 << 2);
+	r0 = ashift r0 by r5.l (v) || r5 = [p0 + 48];
+	r2.l = ashift r2.l by r4.l || r4 = [p0];
+	r6 = lshift r6 by r5.l || r5 = w[p0 + 2] (x);
+	p1 = r6;
+	p1 = p5 + (p1 << 1);
+.if \ahead
+	r0.h = r0.h * r3.l, r0.l = r0.l * r3.l (s2rnd) || r3.h = w[p1] || r6 = [i1++];
+	r1 = ashift r1 by r4.l (v) || r0 = [i0++] || [i2++] = r0;
+	r2.h = ashift r2.h by r5.l || r4 = [i0++] || r5.h = w[i1--];
+	r1.h = r1.h * r3.h, r1.l = r1.l * r3.h (s2rnd) || r5.l = w[i1++];
+	r2.h = r2.h * r3.h, r2.l = r2.l * r3.l (s2rnd) || r1 = [i0] || [i2++] = r1;
+.else
+	r0.h = r0.h * r3.l, r0.l = r0.l * r3.l (s2rnd) || r3.h = w[p1];
+	r1 = ashift r1 by r4.l (v) || [i2++] = r0;
+	r2.h = ashift r2.h by r5.l;
+	r1.h = r1.h * r3.h, r1.l = r1.l * r3.h (s2rnd);
+	r2.h = r2.h * r3.h, r2.l = r2.l * r3.l (s2rnd) || [i2++] = r1;
+.endif
+.endm
+
+/* Phase 2 of one row: from C and q (pass B) to the coefficients, in place. In: P3 = row. */
+.macro HS_PHASE2 tag
+	r0 = p3;
+	i0 = r0;                        /* C loads */
+	i2 = r0;                        /* (gy':gx') stores */
+	r1 = [fp + HS_W4];
+	r0 = r0 + r1;
+	i1 = r0;                        /* q loads */
+	i3 = r0;                        /* gt' stores */
+	r7 = 0;
+	p3 = [fp + HS_NPAIR];
+	cc = p3 == 0;
+	if cc jump .Lp2_even\tag;
+	p3 += -1;
+	mnop || r0 = [i0++] || r6 = [i1++];
+	mnop || r4 = [i0++] || r5.h = w[i1--];
+	r0 = r4 +|- r0 || r1 = [i0] || r5.l = w[i1++];
+	cc = p3 == 0;
+	if cc jump .Lp2_last\tag;
+	lsetup (.Lp2_pair\tag, .Lp2_pair_end\tag) lc0 = p3;
+.Lp2_pair\tag:
+	HS_PAIR 1
+.Lp2_pair_end\tag:
+	r0 = r4 +|- r0 || [i3++] = r2;
+.Lp2_last\tag:
+	HS_PAIR 0
+	r3 = [fp + HS_ODD];
+	cc = r3 == 0;
+	[i3++] = r2;
+	if cc jump .Lp2_even\tag (bp);
+	/* Odd width: pixel width-1 alone, its right neighbour itself; the pad after gt' is 0. */
+	r0 = [i0];
+	r2 = 0;
+	r2.l = w[i1];
+	r0 = r0 +|- r0;
+	r2 = r2 +|+ r2;
+	a0 = r0.l * r0.l (is);
+	a0 += r0.h * r0.h (is);
+	r6 = (a0 += a1);
+	r7.l = signbits r6;
+	p0 = r7;
+	p0 = p4 + (p0 << 2);
+	r4 = [p0 + 48];
+	r6 = lshift r6 by r4.l || r5 = [p0];
+	p1 = r6;
+	p1 = p5 + (p1 << 1);
+	r0 = ashift r0 by r5.l (v) || r4 = w[p0 + 2] (x);
+	r2.l = ashift r2.l by r4.l || r3.l = w[p1];
+	r0.h = r0.h * r3.l, r0.l = r0.l * r3.l (s2rnd);
+	r2.l = r2.l * r3.l (s2rnd) || [i2++] = r0;
+	[i3] = r2;
+	jump .Lp2_done\tag;
+.Lp2_even\tag:
+	/* Even width: the pair width-2, width-1 with C(width) = C(width-1), q(width) = q(width-1). */
+	r0 = [i0++];
+	r4 = [i0];
+	mnop || r1 = [i0] || r6 = [i1];
+	r0 = r4 +|- r0;
+	r5 = pack (r6.h, r6.h);
+	HS_PAIR 0
+	[i3] = r2;
+.Lp2_done\tag:
+.endm
+
+	.section .l1.text, "ax"
+	.align 4
+	.global _bvb_hs_prepare_asm
+	.type _bvb_hs_prepare_asm, STT_FUNC
+_bvb_hs_prepare_asm:
+	[--sp] = (r7:4, p5:3);
+	link HS_FRAME;
+	/* Arguments 4-7 at FP + 8 (RETS, FP) + 28 (saves) + 12. */
+	b1 = r0;                        /* frame 1 row */
+	b2 = r1;                        /* frame 2 row */
+	r3 = r2 << 2;
+	[fp + HS_W4] = r3;
+	r4 = r2 << 1;
+	r4 = r4 + r3;
+	r5 = 1;
+	r5 = r5 & r2;
+	[fp + HS_ODD] = r5;
+	r6 = r5 << 1;
+	r4 = r4 + r6;
+	[fp + HS_PITCH] = r4;
+	r3 = r2 >> 2;
+	[fp + HS_NGF] = r3;
+	r4 = 3;
+	r4 = r4 & r2;
+	[fp + HS_TAIL] = r4;
+	r3 = r2;
+	r3 += -1;
+	r3 >>= 1;
+	[fp + HS_NPAIR] = r3;
+	r3 = [fp + 52];
+	b3 = r3;                        /* stride */
+	r3 = [fp + 56];                 /* alpha2_q4, clamped to 1024..1048576 */
+	r4 = 1024;
+	r3 = max (r3, r4);
+	r4.l = 0;
+	r4.h = 0x10;
+	r3 = min (r3, r4);
+	a1 = r3;
+	p3 = [fp + 60];
+	b0 = p3;                        /* coefficient row */
+	p4.l = .Lhs_counts - 36;
+	p4.h = .Lhs_counts - 36;
+	p5.l = _bvb_hs_rsqrt_table - 512;
+	p5.h = _bvb_hs_rsqrt_table - 512;
+	p0 = p3;
+	HS_PASS_A 0
+	r0 = [fp + 48];                 /* height */
+	r0 += -1;
+	lc1 = r0;
+	lsetup (.Lpr_row, .Lpr_row_end) lc1;
+.Lpr_row:
+	r2 = b3;
+	r0 = b1;
+	r0 = r0 + r2;
+	b1 = r0;
+	r1 = b2;
+	r1 = r1 + r2;
+	b2 = r1;
+	r2 = b0;
+	r3 = [fp + HS_PITCH];
+	r2 = r2 + r3;
+	p0 = r2;
+	HS_PASS_A 1
+	p3 = b0;
+	r0 = p3;
+	i2 = r0;
+	r1 = [fp + HS_PITCH];
+	r1 = r1 + r0;
+	i3 = r1;
+	p0 = p3;
+	r1 = [fp + HS_W4];
+	r0 = r0 + r1;
+	p1 = r0;
+	HS_PASS_B 1
+	p3 = b0;
+	HS_PHASE2 1
+	r0 = b0;
+	r1 = [fp + HS_PITCH];
+	r0 = r0 + r1;
+.Lpr_row_end:
+	b0 = r0;
+	/* Last row: the row below is the row itself. */
+	p3 = b0;
+	r0 = p3;
+	i2 = r0;
+	i3 = r0;
+	p0 = p3;
+	r1 = [fp + HS_W4];
+	r0 = r0 + r1;
+	p1 = r0;
+	HS_PASS_B 2
+	p3 = b0;
+	HS_PHASE2 2
+	unlink;
+	(r7:4, p5:3) = [sp++];
+	rts;
+	.size _bvb_hs_prepare_asm, . - _bvb_hs_prepare_asm
+
+/* ---------------------------------------------------------------------------------------------
+ * bvb_hornschunck_asm(i1, i2, width, height, stride, alpha2_q4, iterations, uv_out, out_stride,
+ *                     scratch): prepare, then the iterations ping-ponging between the scratch
+ * flow buffer and uv_out, starting in the one that makes the last iteration write uv_out.
+ * --------------------------------------------------------------------------------------------- */
+#define HS_OUT_STRIDE -4
+#define HS_CUR        -8
+#define HS_CUR_STRIDE -12
+#define HS_NEXT       -16
+#define HS_NEXT_STRIDE -20
+#define HS_I1         -24
+#define HS_I2         -28
+#define HS_DRV_FRAME  56             /* locals at FP-28..-1, outgoing arguments at SP + 12..27 */
+
+	.section .l1.text, "ax"
+	.align 4
+	.global _bvb_hornschunck_asm
+	.type _bvb_hornschunck_asm, STT_FUNC
+_bvb_hornschunck_asm:
+	[--sp] = (r7:4, p5:3);
+	link HS_DRV_FRAME;
+	/* Arguments 4-10 at FP + 48. */
+	[fp + HS_I1] = r0;
+	[fp + HS_I2] = r1;
+	r4 = r2;                         /* width */
+	r5 = [fp + 48];                  /* height */
+	r6 = [fp + 60];                  /* iterations */
+	p5 = [fp + 64];                  /* uv_out */
+	r0 = [fp + 68];
+	[fp + HS_OUT_STRIDE] = r0;
+	p3 = [fp + 72];                  /* coefficients at the start of scratch */
+	r7 = r4 << 2;                    /* the scratch flow buffer's stride */
+	/* tmp = scratch + BVB_HS_COEF_BYTES(width, height) */
+	r0 = r4 << 1;
+	r0 = r0 + r7;
+	r1 = 1;
+	r1 = r1 & r4;
+	r1 = r1 << 1;
+	r0 = r0 + r1;
+	r0 *= r5;
+	r1 = p3;
+	r0 = r0 + r1;
+	p4 = r0;
+	/* cur = iterations odd ? tmp : uv_out; next is the other one. */
+	r0 = p4;
+	r1 = r7;
+	r2 = p5;
+	r3 = [fp + HS_OUT_STRIDE];
+	cc = bittst (r6, 0);
+	if !cc r0 = r2;
+	if !cc r1 = r3;
+	[fp + HS_CUR] = r0;
+	[fp + HS_CUR_STRIDE] = r1;
+	r2 = p4;
+	r3 = r7;
+	p0 = p5;
+	if cc r2 = p0;
+	r0 = [fp + HS_OUT_STRIDE];
+	if cc r3 = r0;
+	[fp + HS_NEXT] = r2;
+	[fp + HS_NEXT_STRIDE] = r3;
+	/* Zero flow to start from: width words per row of cur. */
+	r0 = [fp + HS_CUR];
+	r1 = [fp + HS_CUR_STRIDE];
+	r2 = 0;
+	p1 = r4;
+	lc1 = r5;
+	lsetup (.Lhs_zrow, .Lhs_zrow_end) lc1;
+.Lhs_zrow:
+	p0 = r0;
+	lsetup (.Lhs_zpix, .Lhs_zpix) lc0 = p1;
+.Lhs_zpix:
+	[p0++] = r2;
+.Lhs_zrow_end:
+	r0 = r0 + r1;
+	/* prepare(i1, i2, width, height, stride, alpha2_q4, coef) */
+	r0 = [fp + 52];
+	[sp + 16] = r0;
+	r0 = [fp + 56];
+	[sp + 20] = r0;
+	[sp + 12] = r5;
+	[sp + 24] = p3;
+	r0 = [fp + HS_I1];
+	r1 = [fp + HS_I2];
+	r2 = r4;
+	call _bvb_hs_prepare_asm;
+	cc = r6 <= 0;
+	if cc jump .Lhs_done;
+.Lhs_iter:
+	/* iterate(coef, cur, cur_stride, next, next_stride, width, height), then swap. */
+	r0 = [fp + HS_NEXT];
+	[sp + 12] = r0;
+	r0 = [fp + HS_NEXT_STRIDE];
+	[sp + 16] = r0;
+	[sp + 20] = r4;
+	[sp + 24] = r5;
+	r0 = p3;
+	r1 = [fp + HS_CUR];
+	r2 = [fp + HS_CUR_STRIDE];
+	call _bvb_hs_iterate_asm;
+	r0 = [fp + HS_CUR];
+	r1 = [fp + HS_CUR_STRIDE];
+	r2 = [fp + HS_NEXT];
+	r3 = [fp + HS_NEXT_STRIDE];
+	[fp + HS_CUR] = r2;
+	[fp + HS_CUR_STRIDE] = r3;
+	[fp + HS_NEXT] = r0;
+	[fp + HS_NEXT_STRIDE] = r1;
+	r6 += -1;
+	cc = r6 == 0;
+	if !cc jump .Lhs_iter (bp);
+.Lhs_done:
+	unlink;
+	(r7:4, p5:3) = [sp++];
+	rts;
+	.size _bvb_hornschunck_asm, . - _bvb_hornschunck_asm

@@ -1,0 +1,391 @@
+// Check, bench and run for bvb/hornschunck.h: hs_prepare (derivatives and coefficients),
+// hs_iterate (one Jacobi iteration) and hornschunck (prepare plus N iterations).
+//
+// Bench cases: hs_prepare and hs_iterate are one call on a w x h frame (c/px per frame pixel;
+// hs_iterate is one iteration). hornschunck runs N = 10 iterations, and its c/px is per frame
+// pixel for the whole call (prepare + 10 iterations), as the case name "WxH N=10" says.
+#include "bvb/hornschunck.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "family.h"
+#include "io.h"
+#include "patterns.h"
+
+namespace bvb {
+namespace {
+
+// The C reference at 640x480 with 10 iterations takes about 1.1e9 cycles (prepare ~330 c/px,
+// each iteration ~300 c/px), past the default watchdog.
+constexpr uint32_t kLongCallLimit = 2000000000u;
+constexpr int kBenchIterations = 10;
+
+struct FramePair {
+  std::vector<uint8_t> f1, f2;  // stride * (h - 1) + w bytes each
+  std::string name;
+};
+
+// Bilinear sample of a w x h image at (x, y), coordinates clamped to the frame.
+double sample(const Image &img, double x, double y) {
+  x = std::min(std::max(x, 0.0), double(img.width - 1));
+  y = std::min(std::max(y, 0.0), double(img.height - 1));
+  const int x0 = int(x), y0 = int(y);
+  const int x1 = std::min(x0 + 1, img.width - 1), y1 = std::min(y0 + 1, img.height - 1);
+  const double fx = x - x0, fy = y - y0;
+  return (1 - fy) * ((1 - fx) * img.at(x0, y0) + fx * img.at(x1, y0)) +
+         fy * ((1 - fx) * img.at(x0, y1) + fx * img.at(x1, y1));
+}
+
+// A textured grey image: a crop of a real frame, or smooth noise when the frames are absent.
+Image texture(int w, int h, Rng &rng, const std::string &frames_real) {
+  Image img = real_crop(frames_real, w, h, rng);
+  if (!img.data.empty()) return img;
+  img = Image(w, h);
+  const double fx = 0.05 + 0.3 * (rng.u32() / 4294967296.0), fy = 0.05 + 0.3 * (rng.u32() / 4294967296.0);
+  const double p = rng.u32() / 4294967296.0 * 6.283;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      img.at(x, y) = uint8_t(std::lround(127.5 + 60 * std::sin(fx * x + p) * std::cos(fy * y - p) +
+                                         20 * (rng.u32() / 4294967296.0 - 0.5)));
+  return img;
+}
+
+std::vector<uint8_t> to_plane(const Image &img, int stride, Rng &rng) {
+  std::vector<uint8_t> d(size_t(stride) * (img.height - 1) + img.width);
+  for (auto &v : d) v = uint8_t(rng.u32());  // row padding is noise: a kernel reading it shows
+  for (int y = 0; y < img.height; ++y)
+    std::memcpy(&d[size_t(y) * stride], &img.data[size_t(y) * img.width], size_t(img.width));
+  return d;
+}
+
+// Frame pairs: frame 2 is frame 1 moved (so the flow means something), unrelated noise, crafted
+// patterns, or opposite extremes that drive every derivative to its limit.
+enum class PairKind { Warp, Shift, Noise, Patterns, Saturate, Count };
+
+FramePair make_pair(PairKind kind, int w, int h, int stride, Rng &rng, const std::string &frames_real) {
+  FramePair p;
+  switch (kind) {
+    case PairKind::Warp: {
+      // Frame 2 samples frame 1 along a smooth motion: translation, rotation and zoom.
+      const Image a = texture(w, h, rng, frames_real);
+      const double tx = rng.uniform(-300, 300) / 100.0, ty = rng.uniform(-300, 300) / 100.0;
+      const double rot = rng.uniform(-30, 30) / 1000.0, zoom = 1 + rng.uniform(-30, 30) / 1000.0;
+      Image b(w, h);
+      const double cx = (w - 1) / 2.0, cy = (h - 1) / 2.0;
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          // I2(x) = I1(x - d(x)): the content moves by about (tx, ty) plus the rotation/zoom.
+          const double dx = x - cx, dy = y - cy;
+          const double sx = cx + (dx * std::cos(rot) + dy * std::sin(rot)) / zoom - tx;
+          const double sy = cy + (-dx * std::sin(rot) + dy * std::cos(rot)) / zoom - ty;
+          b.at(x, y) = uint8_t(std::lround(sample(a, sx, sy)));
+        }
+      p.f1 = to_plane(a, stride, rng);
+      p.f2 = to_plane(b, stride, rng);
+      p.name = "warp";
+      break;
+    }
+    case PairKind::Shift: {
+      // Two windows of one larger texture, an integer number of pixels apart.
+      const int dx = rng.uniform(-4, 4), dy = rng.uniform(-4, 4);
+      const Image big = texture(w + 8, h + 8, rng, frames_real);
+      Image a(w, h), b(w, h);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          a.at(x, y) = big.at(x + 4, y + 4);
+          b.at(x, y) = big.at(x + 4 - dx, y + 4 - dy);
+        }
+      p.f1 = to_plane(a, stride, rng);
+      p.f2 = to_plane(b, stride, rng);
+      p.name = "shift " + std::to_string(dx) + "," + std::to_string(dy);
+      break;
+    }
+    case PairKind::Noise:
+      p.f1 = make_plane(Pattern::Noise, w, h, stride, rng, frames_real);
+      p.f2 = make_plane(Pattern::Noise, w, h, stride, rng, frames_real);
+      p.name = "noise";
+      break;
+    case PairKind::Patterns: {
+      const auto &all = all_patterns();
+      const Pattern pa = all[rng.uniform(0, int(all.size()) - 1)];
+      const Pattern pb = all[rng.uniform(0, int(all.size()) - 1)];
+      p.f1 = make_plane(pa, w, h, stride, rng, frames_real);
+      p.f2 = make_plane(pb, w, h, stride, rng, frames_real);
+      p.name = std::string(pattern_name(pa)) + "+" + pattern_name(pb);
+      break;
+    }
+    default: {
+      // 0 -> 255 everywhere (gt at its limit), or a checkerboard against its inverse (gt = 0
+      // but the largest |gx|, |gy| pattern), or a checkerboard against flat extremes.
+      const int v = rng.uniform(0, 2);
+      p.f1 = make_plane(v == 0 ? Pattern::Zero : Pattern::Checker, w, h, stride, rng, frames_real);
+      p.f2 = make_plane(v == 0 ? Pattern::Max : v == 1 ? Pattern::Checker : Pattern::Max, w, h, stride,
+                        rng, frames_real);
+      if (v == 1)
+        for (auto &b : p.f2) b = uint8_t(255 - b);
+      p.name = v == 0 ? "0->255" : v == 1 ? "checker->inverse" : "checker->255";
+      break;
+    }
+  }
+  return p;
+}
+
+// alpha2_q4 values: the legal range's ends, the project's default (alpha 8), random legal values,
+// and out-of-range values the kernels clamp.
+int32_t pick_alpha2(Rng &rng) {
+  switch (rng.uniform(0, 6)) {
+    case 0: return BVB_HS_ALPHA2_Q4_MIN;
+    case 1: return BVB_HS_ALPHA2_Q4_MAX;
+    case 2: return 16 * 16 * 16;  // alpha 16
+    case 3: {
+      static const int32_t outside[] = {0, -5, 1, 1023, 1048577, 0x7fffffff, int32_t(0x80000000)};
+      return outside[rng.uniform(0, 6)];
+    }
+    default: return rng.uniform(BVB_HS_ALPHA2_Q4_MIN, BVB_HS_ALPHA2_Q4_MAX);
+  }
+}
+
+std::vector<uint8_t> as_bytes(const std::vector<int16_t> &v) {
+  std::vector<uint8_t> b(v.size() * 2);
+  std::memcpy(b.data(), v.data(), b.size());
+  return b;
+}
+
+// Coefficients for the iterate checks: the C prepare on a frame pair (what the kernel really
+// sees), or any int16 values (the iteration's arithmetic is defined for all of them).
+std::vector<int16_t> make_coef(int w, int h, Rng &rng, const std::string &frames_real, std::string *name) {
+  std::vector<int16_t> coef(BVB_HS_COEF_BYTES(w, h) / 2);
+  const int kind = rng.uniform(0, 3);
+  if (kind == 0) {
+    for (auto &c : coef) c = int16_t(rng.u32());
+    *name = "coef random";
+  } else if (kind == 1) {
+    const int16_t ext[] = {-32768, 32767, -32767, 0, 1, -1, 16384, -16384};
+    for (auto &c : coef) c = ext[rng.uniform(0, 7)];
+    *name = "coef extremes";
+  } else {
+    const int stride = pick_stride(w, rng);
+    FramePair p = make_pair(PairKind(rng.uniform(0, int(PairKind::Count) - 1)), w, h, stride, rng, frames_real);
+    bvb_hs_prepare_c(p.f1.data(), p.f2.data(), w, h, stride, pick_alpha2(rng), coef.data());
+    *name = "coef " + p.name;
+  }
+  return coef;
+}
+
+// A flow field with `stride` bytes per row (padding is noise).
+std::vector<int16_t> make_flow(int w, int h, int stride, Rng &rng, std::string *name) {
+  std::vector<int16_t> uv(size_t(stride / 2) * h);
+  for (auto &v : uv) v = int16_t(rng.u32());
+  const int kind = rng.uniform(0, 3);
+  int32_t lim = 0;
+  switch (kind) {
+    case 0: *name = "flow random"; return uv;  // the whole int16 range
+    case 1: lim = 20 * 512; *name = "flow +-20px"; break;
+    case 2: lim = 2 * 512; *name = "flow +-2px"; break;
+    default: *name = "flow extremes"; break;
+  }
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < 2 * w; ++x) {
+      int16_t &v = uv[size_t(y) * (stride / 2) + x];
+      if (kind == 3) {
+        const int16_t ext[] = {-32768, 32767, 0};
+        v = ext[rng.uniform(0, 2)];
+      } else {
+        v = int16_t(rng.uniform(-lim, lim));
+      }
+    }
+  return uv;
+}
+
+std::string size_name(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+CheckCall prepare_call(int w, int h, int stride, const FramePair &p, int32_t alpha2, const std::string &name) {
+  CheckCall c;
+  c.kernel = "hs_prepare";
+  c.case_name = name;
+  c.pixels = double(w) * h;
+  c.cycle_limit = kLongCallLimit;
+  const View fv{1, false, w, h, stride};
+  const int pitch = BVB_HS_COEF_PITCH(w);
+  const View cv{2, true, pitch, h, pitch};
+  int i1 = c.in("i1", p.f1, fv);
+  int i2 = c.in("i2", p.f2, fv);
+  int ic = c.out("coef", BVB_HS_COEF_BYTES(w, h), cv);
+  c.buf(i1).buf(i2).word(w).word(h).word(stride).word(alpha2).buf(ic);
+  c.host = [=](HostBuffers &m) {
+    bvb_hs_prepare_c(m.u8(i1), m.u8(i2), w, h, stride, alpha2, m.s16(ic));
+  };
+  return c;
+}
+
+CheckCall iterate_call(int w, int h, const std::vector<int16_t> &coef, const std::vector<int16_t> &uv,
+                       int in_stride, int out_stride, const std::string &name) {
+  CheckCall c;
+  c.kernel = "hs_iterate";
+  c.case_name = name;
+  c.pixels = double(w) * h;
+  c.cycle_limit = kLongCallLimit;
+  const int pitch = BVB_HS_COEF_PITCH(w);
+  int ic = c.in("coef", as_bytes(coef), {2, true, pitch, h, pitch});
+  int iu = c.in("uv_in", as_bytes(uv), {2, true, 2 * w, h, in_stride / 2});
+  int io = c.out("uv_out", size_t(out_stride) * (h - 1) + 4 * size_t(w), {2, true, 2 * w, h, out_stride / 2});
+  c.buf(ic).buf(iu).word(in_stride).buf(io).word(out_stride).word(w).word(h);
+  c.host = [=](HostBuffers &m) {
+    bvb_hs_iterate_c(m.s16(ic), m.s16(iu), in_stride, m.s16(io), out_stride, w, h);
+  };
+  return c;
+}
+
+CheckCall full_call(int w, int h, int stride, const FramePair &p, int32_t alpha2, int iterations,
+                    int out_stride, const std::string &name) {
+  CheckCall c;
+  c.kernel = "hornschunck";
+  c.case_name = name;
+  c.pixels = double(w) * h;
+  c.cycle_limit = kLongCallLimit;
+  const View fv{1, false, w, h, stride};
+  int i1 = c.in("i1", p.f1, fv);
+  int i2 = c.in("i2", p.f2, fv);
+  int io = c.out("uv_out", size_t(out_stride) * (h - 1) + 4 * size_t(w), {2, true, 2 * w, h, out_stride / 2});
+  int is = c.scratch("scratch", BVB_HS_SCRATCH_BYTES(w, h));
+  c.buf(i1).buf(i2).word(w).word(h).word(stride).word(alpha2).word(iterations).buf(io).word(out_stride).buf(is);
+  c.host = [=](HostBuffers &m) {
+    bvb_hornschunck_c(m.u8(i1), m.u8(i2), w, h, stride, alpha2, iterations, m.s16(io), out_stride, m.u8(is));
+  };
+  return c;
+}
+
+// Frames have no alignment contract; flow, coefficients and scratch are word-aligned.
+void place(Checker &ck, CheckCall &c, Rng &rng) {
+  for (auto &b : c.bufs) b.skew = b.role == Role::In && b.view.elem == 1 ? uint32_t(rng.uniform(0, 3)) : 0;
+  ck.place_randomly(c);
+}
+
+int flow_stride(int w, Rng &rng) { return pick_stride(4 * w, rng, 4); }
+
+void check(Checker &ck) {
+  Rng &rng = ck.rng();
+  const std::string &real = ck.options().frames_real;
+  const bool campaign = ck.options().campaign;
+  const std::vector<Size> sizes = check_sizes(BVB_HS_MIN_DIM, BVB_HS_MIN_DIM, rng, campaign);
+  std::vector<Size> small = sizes;
+  // Every width from 2 to 25 on small heights: each way the assembly splits a row (iteration:
+  // width - 2 mod 3; prepare: 0 to 5 groups of 4 columns, odd/even group counts, 0-3 columns
+  // left over, odd/even width).
+  for (int w = 2; w <= 25; ++w) small.push_back({w, rng.uniform(2, 6)});
+
+  if (ck.wants("hs_prepare")) {
+    for (Size s : small)
+      for (int k = 0; k < int(PairKind::Count); ++k) {
+        const int stride = pick_stride(s.w, rng);
+        FramePair p = make_pair(PairKind(k), s.w, s.h, stride, rng, real);
+        const int32_t a2 = pick_alpha2(rng);
+        CheckCall c = prepare_call(s.w, s.h, stride, p, a2,
+                                   size_name(s.w, s.h) + " stride " + std::to_string(stride) + " " + p.name +
+                                       " alpha2_q4 " + std::to_string(a2));
+        place(ck, c, rng);
+        ck.add(std::move(c));
+      }
+  }
+  if (ck.wants("hs_iterate")) {
+    for (Size s : small)
+      for (int k = 0; k < 4; ++k) {
+        std::string cn, fn;
+        const std::vector<int16_t> coef = make_coef(s.w, s.h, rng, real, &cn);
+        const int is = flow_stride(s.w, rng), os = flow_stride(s.w, rng);
+        const std::vector<int16_t> uv = make_flow(s.w, s.h, is, rng, &fn);
+        CheckCall c = iterate_call(s.w, s.h, coef, uv, is, os,
+                                   size_name(s.w, s.h) + " strides " + std::to_string(is) + "/" +
+                                       std::to_string(os) + " " + cn + " " + fn);
+        place(ck, c, rng);
+        ck.add(std::move(c));
+      }
+  }
+  if (ck.wants("hornschunck")) {
+    for (Size s : sizes)
+      for (int k = 0; k < int(PairKind::Count); ++k) {
+        const int stride = pick_stride(s.w, rng), os = flow_stride(s.w, rng);
+        FramePair p = make_pair(PairKind(k), s.w, s.h, stride, rng, real);
+        const int32_t a2 = pick_alpha2(rng);
+        // Up to 10 iterations on small frames; large ones keep the simulator time reasonable.
+        static const int counts[] = {0, 1, 2, 3, 10};
+        int n = counts[rng.uniform(0, 4)];
+        if (double(s.w) * s.h > 40000) n = std::min(n, 2);
+        CheckCall c = full_call(s.w, s.h, stride, p, a2, n, os,
+                                size_name(s.w, s.h) + " stride " + std::to_string(stride) + "/" +
+                                    std::to_string(os) + " " + p.name + " alpha2_q4 " + std::to_string(a2) +
+                                    " N=" + std::to_string(n));
+        place(ck, c, rng);
+        ck.add(std::move(c));
+      }
+  }
+}
+
+CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
+  FramePair p = make_pair(PairKind::Warp, w, h, w, rng, default_frames_real());
+  if (kernel == "hs_prepare") return prepare_call(w, h, w, p, 1024, size_name(w, h));
+  if (kernel == "hs_iterate") {
+    std::vector<int16_t> coef(BVB_HS_COEF_BYTES(w, h) / 2);
+    bvb_hs_prepare_c(p.f1.data(), p.f2.data(), w, h, w, 1024, coef.data());
+    std::vector<int16_t> uv(size_t(2) * w * h);
+    for (auto &v : uv) v = int16_t(rng.uniform(-1024, 1024));
+    return iterate_call(w, h, coef, uv, 4 * w, 4 * w, size_name(w, h));
+  }
+  return full_call(w, h, w, p, 1024, kBenchIterations, 4 * w,
+                   size_name(w, h) + " N=" + std::to_string(kBenchIterations));
+}
+
+// Issues per pixel of the assembly's instruction mapping, one issue per cycle being one 32-bit
+// ALU/MAC instruction with up to two loads or a load and a store, or one 16-bit instruction
+// (firmware/asm/hornschunck.S derives them):
+//   iteration 10 (ALU/MAC; its 6 loads and 1 store ride along);
+//   prepare 17 = 1 (per-row sums: 4 stores per 4 columns) + 2 (column sums: 8 ALU per 4
+//     columns) + 14 (coefficients: 10 ALU/MAC + 4 pointer moves per pixel);
+//   hornschunck = 1 (zeroing the start flow: a store per pixel) + prepare + 10 per iteration.
+double lower_bound(const std::string &kernel, int w, int h) {
+  const double px = double(w) * h;
+  if (kernel == "hs_iterate") return 10 * px;
+  if (kernel == "hs_prepare") return 17 * px;
+  if (kernel == "hornschunck") return (1 + 17 + 10.0 * kBenchIterations) * px;
+  return 0;
+}
+
+RunPlan plan_run(RunRequest &req) {
+  if (req.kernel != "hornschunck")
+    throw InputError(req.kernel + " is a stage of Horn-Schunck; run 'hornschunck' on a frame pair");
+  if (req.inputs.size() != 2) throw InputError("hornschunck takes two --in frames (frame 1, frame 2)");
+  const int alpha = req.params.get_int("alpha", 8, 8, 256);
+  const int iterations = req.params.get_int("iterations", 10, 0, 100000);
+  req.params.check_all_used();
+  Image a = read_frame(req.inputs[0], req.raw_width, req.raw_height);
+  Image b = read_frame(req.inputs[1], req.raw_width, req.raw_height);
+  if (a.width != b.width || a.height != b.height) throw InputError("hornschunck: the two frames differ in size");
+  if (a.width < BVB_HS_MIN_DIM || a.height < BVB_HS_MIN_DIM)
+    throw InputError("hornschunck: frames must be at least 2x2");
+  const int w = a.width, h = a.height;
+  FramePair p{a.data, b.data, "run"};
+  RunPlan plan;
+  plan.call = full_call(w, h, w, p, 16 * alpha * alpha, iterations, 4 * w, "run");
+  plan.write = [w, h](std::vector<std::vector<uint8_t>> &bufs, const std::string &path) {
+    // Q9 to pixels: value / 512 is exact in float.
+    const int16_t *uv = reinterpret_cast<const int16_t *>(bufs[2].data());
+    FlowField f(w, h);
+    for (size_t i = 0; i < size_t(w) * h; ++i) {
+      f.u[i] = float(uv[2 * i]) / (1 << BVB_HS_UV_FRAC_BITS);
+      f.v[i] = float(uv[2 * i + 1]) / (1 << BVB_HS_UV_FRAC_BITS);
+    }
+    write_flo(path, f);
+  };
+  plan.summary = size_name(w, h) + ", alpha " + std::to_string(alpha) + ", " + std::to_string(iterations) +
+                 " iterations";
+  return plan;
+}
+
+const Family kHornSchunck{"hornschunck", {"hs_prepare", "hs_iterate", "hornschunck"}, check, bench_call,
+                          lower_bound, plan_run};
+BVB_FAMILY(kHornSchunck);
+
+}  // namespace
+}  // namespace bvb
