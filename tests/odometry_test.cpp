@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "bvb/pipe_odometry.h"
@@ -15,7 +16,6 @@ constexpr double kPi = 3.14159265358979323846;
 // The SRV-1 scene camera at 160x120 (harness/scene/camera.h) and the pipeline's usual settings.
 bvb_odo_params params_160x120() {
   bvb_odo_params p{};
-  p.width = 160, p.height = 120, p.stride = 160;
   p.fx = p.fy = 140 * 256;
   p.cx = 79 * 256 + 128, p.cy = 59 * 256 + 128;
   p.cam_height = 4 << 16, p.tilt = 10 << 16, p.cam_offset = 0;
@@ -68,22 +68,24 @@ TEST(OdometryParams, FloorRegionStartsWhereTheFloorIsMaxRangeAway) {
   // is seen at yn = (4 cos 10 - 24 sin 10) / (24 cos 10 + 4 sin 10) = -0.00939, row 58.19.
   const bvb_odo_params p = params_160x120();
   const double t = 10 * kPi / 180, yn = (4 * std::cos(t) - 24 * std::sin(t)) / (24 * std::cos(t) + 4 * std::sin(t));
-  EXPECT_EQ(bvb_odometry_floor_y0(&p), int(std::ceil(59.5 + 140 * yn)));
-  EXPECT_GT(bvb_odometry_state_bytes(&p), uint32_t(160 * 120));
-  EXPECT_GT(bvb_odometry_scratch_bytes(&p), uint32_t(4 * 160 * (120 - 59)));
+  EXPECT_EQ(bvb_pipe_odometry_floor_y0(160, 120, 160, &p), int(std::ceil(59.5 + 140 * yn)));
+  EXPECT_GT(bvb_pipe_odometry_state_bytes(160, 120, 160, &p), uint32_t(160 * 120));
+  EXPECT_GT(bvb_pipe_odometry_work_bytes(160, 120, 160, &p), uint32_t(4 * 160 * (120 - 59)));
 }
 
 TEST(OdometryParams, OutOfRangeIsRejectedWithoutWriting) {
   bvb_odo_params p = params_160x120();
-  EXPECT_GT(bvb_odometry_state_bytes(&p), 0u);
+  EXPECT_GT(bvb_pipe_odometry_state_bytes(160, 120, 160, &p), 0u);
   p.lk_win = 8;  // even
-  EXPECT_EQ(bvb_odometry_state_bytes(&p), 0u);
-  std::vector<uint8_t> frame(160 * 120), state(64, 0xAB), scratch(64);
-  std::vector<int32_t> result(BVB_ODO_RESULT_WORDS, 7);
-  const int32_t info[BVB_ODO_INFO_WORDS] = {0, 0, 0, 0};
-  EXPECT_EQ(bvb_odometry_c(frame.data(), info, &p, state.data(), result.data(), scratch.data()), -1);
+  EXPECT_EQ(bvb_pipe_odometry_state_bytes(160, 120, 160, &p), 0u);
+  std::vector<uint8_t> frame(160 * 120), state(64, 0xAB), work(64);
+  bvb_pipe_result result;
+  std::memset(&result, 0x5A, sizeof result);
+  const bvb_pipe_frame info{0, 0, 0, 0};
+  EXPECT_EQ(bvb_pipe_odometry_c(frame.data(), 160, 120, 160, &info, &p, state.data(), &result, work.data()), -1);
   for (uint8_t b : state) EXPECT_EQ(b, 0xAB);
-  for (int32_t r : result) EXPECT_EQ(r, 7);
+  const uint8_t *r = reinterpret_cast<const uint8_t *>(&result);
+  for (size_t i = 0; i < sizeof result; ++i) EXPECT_EQ(r[i], 0x5A);
 }
 
 }  // namespace

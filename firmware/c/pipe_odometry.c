@@ -6,30 +6,6 @@
 #include "bvb/ncc.h"
 #include "bvb/scanline.h"
 
-/* ---- the kernels one build calls ---- */
-
-struct odo_ops {
-  void (*profile)(const uint8_t *src, int32_t width, int32_t rows, int32_t stride, uint8_t *profile,
-                  void *scratch);
-  void (*shift)(const uint8_t *p1, const uint8_t *p2, int32_t w, int32_t rho, int32_t *result,
-                uint32_t *curve);
-  void (*harris_response)(const uint8_t *src, int32_t *dst, int32_t width, int32_t height,
-                          int32_t src_stride, int32_t dst_stride, void *scratch);
-  int32_t (*harris_nms)(const int32_t *resp, int32_t width, int32_t height, int32_t stride,
-                        int32_t threshold, int32_t *cand, int32_t *count, void *scratch);
-  void (*lk_pyramid)(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
-                     int32_t levels, uint8_t *pyr);
-  void (*lk_track)(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_t *next,
-                   const uint8_t *next_pyr, int32_t width, int32_t height, int32_t stride,
-                   const struct bvb_lk_params *params, const int32_t *in, int32_t *out, void *scratch);
-  void (*ncc_match)(const uint8_t *frame1, const uint8_t *frame2, int32_t stride, int32_t width,
-                    int32_t height, const int16_t *points, int32_t npoints, int32_t radius,
-                    int32_t search, int16_t *results, void *scratch);
-  void (*ncc_scoremap)(const uint8_t *frame1, const uint8_t *frame2, int32_t stride, int32_t width,
-                       int32_t height, int32_t x, int32_t y, int32_t radius, int32_t search,
-                       int16_t *map, void *scratch);
-};
-
 /* ---- fixed-point helpers ---- */
 
 #define Q16 65536
@@ -127,7 +103,7 @@ static int32_t mul_q30(int32_t v, int32_t c) { return (int32_t)shr_round((int64_
 /* ---- layout ---- */
 
 struct odo_state {
-  int32_t initialised;
+  int32_t version;        /* written in frame 0; the state of an earlier frame is trusted only with it */
   int32_t frames;
   int32_t x, y, heading;
   int32_t left, right;
@@ -145,9 +121,10 @@ struct odo_state {
 
 #define ALIGN4(n) (((n) + 3u) & ~3u)
 
-/* Derived quantities and the byte layout of state and scratch. */
+/* Derived quantities and the byte layout of state and work. */
 struct odo_setup {
   int32_t ok;
+  int32_t w, h, stride;
   int32_t floor_y0, hreg;      /* feature region: rows floor_y0 .. height-1 */
   int32_t sin18, cos18;        /* tilt, Q18 */
   int32_t fy_fx;               /* fy / fx, Q16 */
@@ -166,10 +143,12 @@ struct odo_setup {
 
 static int32_t in_range(int32_t v, int32_t lo, int32_t hi) { return v >= lo && v <= hi; }
 
-static void setup(const struct bvb_odo_params *p, struct odo_setup *s) {
+static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_params *p, struct odo_setup *s) {
   s->ok = 0;
-  const int32_t w = p->width, h = p->height;
-  if (!in_range(w, 16, 1024) || !in_range(h, 16, 1024) || p->stride < w || p->stride > 4096) return;
+  s->w = w;
+  s->h = h;
+  s->stride = stride;
+  if (!in_range(w, 16, 1024) || !in_range(h, 16, 1024) || stride < w || stride > 4096) return;
   if (!in_range(p->fx, 256, 1 << 18) || !in_range(p->fy, 256, 1 << 18)) return;
   if (!in_range(p->cx, -(1 << 20), 1 << 20) || !in_range(p->cy, -(1 << 20), 1 << 20)) return;
   if (!in_range(p->cam_height, Q16 / 16, 64 * Q16) || !in_range(p->tilt, -45 * Q16, 45 * Q16)) return;
@@ -252,7 +231,7 @@ static void setup(const struct bvb_odo_params *p, struct odo_setup *s) {
     if (s->bins_rho < 1) return;
   }
 
-  const uint32_t W = (uint32_t)w, H = (uint32_t)h, S = (uint32_t)p->stride, M = BVB_ODO_MAX_FEATURES;
+  const uint32_t W = (uint32_t)w, H = (uint32_t)h, S = (uint32_t)stride, M = BVB_ODO_MAX_FEATURES;
   s->pyr_bytes = ALIGN4(bvb_lk_pyramid_bytes(w, h, p->lk_levels)) + 4;
   s->s_table = sizeof(struct odo_state);
   s->s_profile = s->s_table + 4 * (uint32_t)s->bins;
@@ -287,21 +266,23 @@ static void setup(const struct bvb_odo_params *p, struct odo_setup *s) {
   s->ok = 1;
 }
 
-uint32_t bvb_odometry_state_bytes(const struct bvb_odo_params *p) {
+uint32_t bvb_pipe_odometry_state_bytes(int32_t width, int32_t height, int32_t stride,
+                                       const struct bvb_odo_params *p) {
   struct odo_setup s;
-  setup(p, &s);
+  setup(width, height, stride, p, &s);
   return s.ok ? s.s_total : 0;
 }
 
-uint32_t bvb_odometry_scratch_bytes(const struct bvb_odo_params *p) {
+uint32_t bvb_pipe_odometry_work_bytes(int32_t width, int32_t height, int32_t stride,
+                                      const struct bvb_odo_params *p) {
   struct odo_setup s;
-  setup(p, &s);
+  setup(width, height, stride, p, &s);
   return s.ok ? s.x_total : 0;
 }
 
-int32_t bvb_odometry_floor_y0(const struct bvb_odo_params *p) {
+int32_t bvb_pipe_odometry_floor_y0(int32_t width, int32_t height, int32_t stride, const struct bvb_odo_params *p) {
   struct odo_setup s;
-  setup(p, &s);
+  setup(width, height, stride, p, &s);
   return s.ok ? s.floor_y0 : -1;
 }
 
@@ -418,10 +399,10 @@ static int32_t ncc_peak(int32_t sm, int32_t s0, int32_t sp) {
 
 /* Tracks the previous frame's features into this one: n pairs of Q8 positions (before, after)
  * in pos (4 int32 per feature). Returns the count. */
-static int32_t track(const struct odo_ops *ops, const struct bvb_odo_params *p, const struct odo_setup *s,
+static int32_t track(const struct bvb_odo_kernels *ops, const struct bvb_odo_params *p, const struct odo_setup *s,
                      const struct odo_state *st, const uint8_t *prev, const uint8_t *prev_pyr,
                      const uint8_t *frame, const uint8_t *pyr, uint8_t *x, int32_t *pos) {
-  const int32_t n = st->nfeat, w = p->width, h = p->height, stride = p->stride;
+  const int32_t n = st->nfeat, w = s->w, h = s->h, stride = s->stride;
   int32_t k = 0;
   if (n == 0) return 0;
   if (p->tracker == BVB_ODO_TRACK_LK) {
@@ -556,7 +537,7 @@ static void estimate(const struct bvb_odo_params *p, const struct odo_setup *s, 
 }
 
 /* Stage 2: the profile's rotation since the key, the encoders, and the rotation's fusion. */
-static void rotation(const struct odo_ops *ops, const struct bvb_odo_params *p, const struct odo_setup *s,
+static void rotation(const struct bvb_odo_kernels *ops, const struct bvb_odo_params *p, const struct odo_setup *s,
                      const struct odo_state *st, const uint8_t *key, const uint8_t *cur, int32_t left,
                      int32_t right, uint8_t *x, struct odo_frame *f) {
   int32_t *res = (int32_t *)(x + s->x_result);
@@ -586,26 +567,27 @@ static void rotation(const struct odo_ops *ops, const struct bvb_odo_params *p, 
   f->win_restart = (f->flags & BVB_ODO_F_ROT_ENC) || st->win_age + 1 >= p->fuse_window;
 }
 
-static int32_t odometry_run(const uint8_t *frame, const int32_t *info, const struct bvb_odo_params *p,
-                            uint8_t *state, int32_t *result, void *scratch, const struct odo_ops *ops) {
+int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *frame, int32_t width,
+                              int32_t height, int32_t stride, const struct bvb_pipe_frame *info,
+                              const struct bvb_odo_params *p, uint8_t *state, struct bvb_pipe_result *out,
+                              void *work) {
   struct odo_setup s;
-  setup(p, &s);
+  setup(width, height, stride, p, &s);
   if (!s.ok) return -1;
   struct odo_state *st = (struct odo_state *)state;
-  uint8_t *x = (uint8_t *)scratch;
+  uint8_t *x = (uint8_t *)work;
   uint8_t *key = state + s.s_profile, *prev = state + s.s_frame, *prev_pyr = state + s.s_pyr;
   uint8_t *profile = x + s.x_profile, *pyr = x + s.x_pyr;
   int32_t *table = (int32_t *)(state + s.s_table);
   int32_t *corners = (int32_t *)(x + s.x_corners);
   uint8_t *cur = p->rot_bins ? x + s.x_bins : profile + p->win_x0;
-  const int32_t w = p->width, h = p->height, stride = p->stride, lk = p->tracker == BVB_ODO_TRACK_LK;
-  const int32_t left = info[BVB_ODO_INFO_LEFT], right = info[BVB_ODO_INFO_RIGHT];
-  const int32_t stages = info[BVB_ODO_INFO_STAGES] > 0 ? info[BVB_ODO_INFO_STAGES] : BVB_ODO_STAGES;
-  const int32_t first = !st->initialised;
+  const int32_t w = width, h = height, lk = p->tracker == BVB_ODO_TRACK_LK;
+  const int32_t left = info->left_ticks, right = info->right_ticks;
+  const int32_t stages = info->stages > 0 ? info->stages : BVB_ODO_STAGES;
+  const int32_t first = info->index == 0 || st->version != BVB_ODO_STATE_VERSION;
   struct odo_frame f;
   int32_t k = 0;
 
-  for (int32_t i = 0; i < BVB_ODO_RESULT_WORDS; ++i) result[i] = 0;
   f.flags = f.win_restart = f.tracked = f.m = f.inliers = f.dfwd_vis = f.dfwd_enc = f.dfwd = 0;
   f.shift = f.t = f.dth_vis = f.dth_enc = f.dth = f.motion = f.ncorners = 0;
   f.x = first ? p->start_x : st->x;
@@ -640,7 +622,7 @@ static int32_t odometry_run(const uint8_t *frame, const int32_t *info, const str
   if (++k >= stages) goto done;
   /* 8: commit: the pose, the fusion window, the key profile, this frame as the previous one */
   if (first) {
-    st->initialised = 1;
+    st->version = BVB_ODO_STATE_VERSION;
     st->frames = 0;
     st->win_heading = f.heading;
     st->win_left = left;
@@ -689,41 +671,28 @@ static int32_t odometry_run(const uint8_t *frame, const int32_t *info, const str
   ++k;
 
 done:
-  result[BVB_ODO_R_X] = f.x;
-  result[BVB_ODO_R_Y] = f.y;
-  result[BVB_ODO_R_HEADING] = f.heading;
-  result[BVB_ODO_R_DTHETA_VIS] = f.dth_vis;
-  result[BVB_ODO_R_DTHETA_ENC] = f.dth_enc;
-  result[BVB_ODO_R_DTHETA] = f.dth;
-  result[BVB_ODO_R_DFWD_VIS] = f.dfwd_vis;
-  result[BVB_ODO_R_DFWD_ENC] = f.dfwd_enc;
-  result[BVB_ODO_R_DFWD] = f.dfwd;
-  result[BVB_ODO_R_SHIFT] = f.shift;
-  result[BVB_ODO_R_TRACKED] = f.m;
-  result[BVB_ODO_R_INLIERS] = f.inliers;
-  result[BVB_ODO_R_FLAGS] = f.flags;
-  result[BVB_ODO_R_DETECTED] = f.ncorners;
-  result[BVB_ODO_R_STAGES] = k;
-  return f.tracked;
+  out->decision = BVB_PIPE_STOP;
+  out->has_pose = 1;
+  out->x_q16 = f.x;
+  out->y_q16 = f.y;
+  out->heading_q16 = f.heading;
+  out->diag[BVB_ODO_DIAG_STAGES] = k;
+  out->diag[BVB_ODO_DIAG_DTHETA_VIS] = f.dth_vis;
+  out->diag[BVB_ODO_DIAG_DTHETA_ENC] = f.dth_enc;
+  out->diag[BVB_ODO_DIAG_DTHETA] = f.dth;
+  out->diag[BVB_ODO_DIAG_DFWD_VIS] = f.dfwd_vis;
+  out->diag[BVB_ODO_DIAG_DFWD_ENC] = f.dfwd_enc;
+  out->diag[BVB_ODO_DIAG_DFWD] = f.dfwd;
+  out->diag[BVB_ODO_DIAG_POINTS] = f.flags | f.inliers << 8 | f.m << 16 | f.ncorners << 24;
+  return BVB_PIPE_STOP;
 }
 
-static const struct odo_ops c_ops = {
+static const struct bvb_odo_kernels c_kernels = {
     bvb_scanline_profile_u8_c, bvb_scanline_shift_u8_c, bvb_harris_response_c, bvb_harris_nms_c,
     bvb_lk_pyramid_c,          bvb_lk_track_c,          bvb_ncc_match_c,       bvb_ncc_scoremap_c};
 
-int32_t bvb_odometry_c(const uint8_t *frame, const int32_t *info, const struct bvb_odo_params *params,
-                       uint8_t *state, int32_t *result, void *scratch) {
-  return odometry_run(frame, info, params, state, result, scratch, &c_ops);
+int32_t bvb_pipe_odometry_c(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,
+                            const struct bvb_pipe_frame *info, const struct bvb_odo_params *p, uint8_t *state,
+                            struct bvb_pipe_result *out, void *work) {
+  return bvb_pipe_odometry_run(&c_kernels, frame, width, height, stride, info, p, state, out, work);
 }
-
-#ifdef __bfin__
-/* The assembly build exists only in the firmware: the host has no assembly kernels. */
-static const struct odo_ops asm_ops = {
-    bvb_scanline_profile_u8_asm, bvb_scanline_shift_u8_asm, bvb_harris_response_asm, bvb_harris_nms_asm,
-    bvb_lk_pyramid_asm,          bvb_lk_track_asm,          bvb_ncc_match_asm,       bvb_ncc_scoremap_asm};
-
-int32_t bvb_odometry_asm(const uint8_t *frame, const int32_t *info, const struct bvb_odo_params *params,
-                         uint8_t *state, int32_t *result, void *scratch) {
-  return odometry_run(frame, info, params, state, result, scratch, &asm_ops);
-}
-#endif

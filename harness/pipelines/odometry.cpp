@@ -1,4 +1,4 @@
-// bfbench pipeline odometry, and the odometry kernel's family (check, bench, run).
+// bfbench pipeline odometry, and the pipe_odometry kernel's family (check, bench, run).
 //
 // Parameters (--param K=V; defaults scale with the frame, shown at 160x120):
 //   tracker=lk|ncc [lk]   fuse=0|1 [0]   features=N [32]   min_dist=PX [8]   harris_thr=R [300]
@@ -19,6 +19,7 @@
 #include "bvb/ncc.h"
 #include "bvb/scanline.h"
 #include "io.h"
+#include "pipe_common.h"
 #include "patterns.h"
 #include "scene/scene_io.h"
 
@@ -41,9 +42,6 @@ bvb_odo_params odometry_params(const Camera &cam, Params &params, const Pose &st
   const int w = cam.width, h = cam.height;
   const double sx = w / 160.0;
   bvb_odo_params p{};
-  p.width = w;
-  p.height = h;
-  p.stride = w;
   p.fx = q8(cam.fx);
   p.fy = q8(cam.fy);
   p.cx = q8(cam.cx);
@@ -98,34 +96,35 @@ bvb_odo_params odometry_params(const Camera &cam, Params &params, const Pose &st
   p.fuse_rot_tol = q16(params.get_int("rot_tol", 1000, 0, 360000) / 1000.0);
   p.fuse_trans_tol = q16(params.get_int("trans_tol", 100, 0, 64000) / 1000.0);
   p.fuse_window = params.get_int("fuse_window", 16, 1, 1000000);
-  if (bvb_odometry_state_bytes(&p) == 0) throw InputError("odometry: parameters out of range for this camera");
+  if (bvb_pipe_odometry_state_bytes(w, h, w, &p) == 0)
+    throw InputError("odometry: parameters out of range for this camera");
   return p;
 }
 
-CheckCall odometry_call(const Image &grey, int stride, const int32_t info[BVB_ODO_INFO_WORDS],
-                        const bvb_odo_params &p0, std::vector<uint8_t> state, bool persistent,
-                        const std::string &name) {
-  bvb_odo_params p = p0;
-  p.stride = stride;
+CheckCall odometry_call(const Image &grey, int stride, const bvb_pipe_frame &info, const bvb_odo_params &p,
+                        std::vector<uint8_t> state, bool persistent, const std::string &name) {
   const int w = grey.width, h = grey.height;
   std::vector<uint8_t> frame(size_t(stride) * h, 0);
   for (int y = 0; y < h; ++y) std::memcpy(&frame[size_t(y) * stride], &grey.data[size_t(y) * w], size_t(w));
-  const size_t sbytes = bvb_odometry_state_bytes(&p), xbytes = bvb_odometry_scratch_bytes(&p);
+  const size_t sbytes = bvb_pipe_odometry_state_bytes(w, h, stride, &p);
+  const size_t xbytes = bvb_pipe_odometry_work_bytes(w, h, stride, &p);
+  if (sbytes == 0) throw InputError("odometry: parameters out of range for " + std::to_string(w) + "x" + std::to_string(h));
   if (state.empty()) state.assign(sbytes, 0);
   CheckCall c;
-  c.kernel = "odometry";
+  c.kernel = "pipe_odometry";
   c.case_name = name;
   c.pixels = double(w) * h;
   int ifr = c.in("frame", std::move(frame), View{1, false, w, h, stride});
-  int iin = c.in("info", as_bytes(info, BVB_ODO_INFO_WORDS), View{4, true});
-  int ip = c.in("params", as_bytes(&p, 1), View{4, true});
+  int iin = c.in("info", pipe::bytes_of(info), View{4, true});
+  int ip = c.in("params", pipe::bytes_of(p), View{4, true});
   int ist = c.inout("state", std::move(state), View{4, true});
-  int ir = c.out("result", BVB_ODO_RESULT_WORDS * 4, View{4, true});
-  int ix = c.scratch("scratch", xbytes);
+  int ir = c.out("result", sizeof(bvb_pipe_result), View{4, true});
+  int ix = c.scratch("work", xbytes);
   c.bufs[size_t(ist)].persistent = persistent;
-  c.buf(ifr).buf(iin).buf(ip).buf(ist).buf(ir).buf(ix);
+  c.buf(ifr).word(w).word(h).word(stride).buf(iin).buf(ip).buf(ist).buf(ir).buf(ix);
   c.host = [=](HostBuffers &m) {
-    m.set_ret(bvb_odometry_c(m.u8(ifr), m.s32(iin), m.as<bvb_odo_params>(ip), m.u8(ist), m.s32(ir), m.u8(ix)));
+    m.set_ret(bvb_pipe_odometry_c(m.u8(ifr), w, h, stride, m.as<bvb_pipe_frame>(iin), m.as<bvb_odo_params>(ip),
+                                  m.u8(ist), m.as<bvb_pipe_result>(ir), m.u8(ix)));
   };
   return c;
 }
@@ -167,25 +166,25 @@ std::vector<OdoSegment> odometry_segments(const std::vector<FrameRecord> &fr) {
 namespace {
 
 FrameOutput decode(const std::vector<std::vector<uint8_t>> &bufs) {
-  int32_t r[BVB_ODO_RESULT_WORDS];
-  std::memcpy(r, bufs[kOdoResultBuf].data(), sizeof r);
+  const bvb_pipe_result r = pipe::from_bytes<bvb_pipe_result>(bufs[kOdoResultBuf]);
+  const int32_t *d = r.diag;
+  const uint32_t points = uint32_t(d[BVB_ODO_DIAG_POINTS]);
   FrameOutput o;
-  o.has_pose = true;
-  o.x_in = r[BVB_ODO_R_X] / 65536.0;
-  o.y_in = r[BVB_ODO_R_Y] / 65536.0;
-  o.heading_deg = r[BVB_ODO_R_HEADING] / 65536.0;
-  o.diag = {{"shift_px", r[BVB_ODO_R_SHIFT] / 256.0},
-            {"dtheta_vis_deg", r[BVB_ODO_R_DTHETA_VIS] / 65536.0},
-            {"dtheta_enc_deg", r[BVB_ODO_R_DTHETA_ENC] / 65536.0},
-            {"dtheta_deg", r[BVB_ODO_R_DTHETA] / 65536.0},
-            {"dfwd_vis_in", r[BVB_ODO_R_DFWD_VIS] / 65536.0},
-            {"dfwd_enc_in", r[BVB_ODO_R_DFWD_ENC] / 65536.0},
-            {"dfwd_in", r[BVB_ODO_R_DFWD] / 65536.0},
-            {"tracked", double(r[BVB_ODO_R_TRACKED])},
-            {"inliers", double(r[BVB_ODO_R_INLIERS])},
-            {"flags", double(r[BVB_ODO_R_FLAGS])},
-            {"detected", double(r[BVB_ODO_R_DETECTED])},
-            {"stages", double(r[BVB_ODO_R_STAGES])}};
+  o.has_pose = r.has_pose != 0;
+  o.x_in = r.x_q16 / 65536.0;
+  o.y_in = r.y_q16 / 65536.0;
+  o.heading_deg = r.heading_q16 / 65536.0;
+  o.diag = {{"stages", double(d[BVB_ODO_DIAG_STAGES])},
+            {"dtheta_vis_deg", d[BVB_ODO_DIAG_DTHETA_VIS] / 65536.0},
+            {"dtheta_enc_deg", d[BVB_ODO_DIAG_DTHETA_ENC] / 65536.0},
+            {"dtheta_deg", d[BVB_ODO_DIAG_DTHETA] / 65536.0},
+            {"dfwd_vis_in", d[BVB_ODO_DIAG_DFWD_VIS] / 65536.0},
+            {"dfwd_enc_in", d[BVB_ODO_DIAG_DFWD_ENC] / 65536.0},
+            {"dfwd_in", d[BVB_ODO_DIAG_DFWD] / 65536.0},
+            {"flags", double(points & 255)},
+            {"inliers", double(points >> 8 & 255)},
+            {"tracked", double(points >> 16 & 255)},
+            {"detected", double(points >> 24)}};
   return o;
 }
 
@@ -252,16 +251,14 @@ CheckCall make_call(const FrameInput &in, Params &params) {
   static Pose start;
   if (in.index == 0) start = in.truth.pose;
   const bvb_odo_params p = odometry_params(*in.camera, params, start);
-  const int stages = params.get_int("stages", 0, 0, BVB_ODO_STAGES);
-  const int32_t info[BVB_ODO_INFO_WORDS] = {in.index, int32_t(in.truth.left_ticks), int32_t(in.truth.right_ticks),
-                                            stages};
+  const bvb_pipe_frame info = pipe::frame_info(in, params.get_int("stages", 0, 0, BVB_ODO_STAGES));
   return odometry_call(*in.grey, in.grey->width, info, p, {}, true, "frame " + std::to_string(in.index));
 }
 
 const PipelineDef kOdometry{"odometry",
                             "visual odometry: profile-shift rotation, floor-feature translation, "
                             "optional encoder fusion (pose vs truth)",
-                            "odometry", make_call, decode, summarize};
+                            "pipe_odometry", make_call, decode, summarize};
 BVB_PIPELINE(kOdometry);
 
 // ---- the kernel family: host C = Blackfin C = assembly on short rendered scenes ----
@@ -279,13 +276,19 @@ void check_sequence(Checker &ck, const Sequence &q) {
   Params params;
   for (const auto &kv : q.params) params.set(kv.first + "=" + kv.second);
   const bvb_odo_params p = odometry_params(gen.camera(), params, gen.pose());
-  std::vector<uint8_t> state;
+  // The state's contents before frame 0 do not matter (the contract): start from noise.
+  const int stride0 = gen.camera().width + q.stride_pad;
+  std::vector<uint8_t> state(bvb_pipe_odometry_state_bytes(gen.camera().width, gen.camera().height, stride0, &p));
+  for (auto &v : state) v = uint8_t(ck.rng().u32());
   std::string label = q.spec;
   for (const auto &kv : q.params) label += " " + kv.first + "=" + kv.second;
   for (int f = 0; f < gen.frames(); ++f) {
     const Image grey = gen.render().grey;
     const FrameTruth t = gen.truth();
-    const int32_t info[BVB_ODO_INFO_WORDS] = {f, int32_t(t.left_ticks), int32_t(t.right_ticks), 0};
+    FrameInput fi;
+    fi.index = f;
+    fi.truth = t;
+    const bvb_pipe_frame info = pipe::frame_info(fi, 0);
     const int stride = grey.width + q.stride_pad;
     CheckCall c = odometry_call(grey, stride, info, p, state, false,
                                 label + " stride " + std::to_string(stride) + " frame " + std::to_string(f));
@@ -302,7 +305,7 @@ void check_sequence(Checker &ck, const Sequence &q) {
 }
 
 void check(Checker &ck) {
-  if (!ck.wants("odometry")) return;
+  if (!ck.wants("pipe_odometry")) return;
   Rng &rng = ck.rng();
   const std::string seed = std::to_string(rng.uniform(1, 1000));
   std::vector<Sequence> seqs = {
@@ -342,7 +345,10 @@ CheckCall bench_call(const std::string &, int w, int h, Rng &) {
   for (int f = 0; f < 2; ++f) {
     const Image grey = gen.render().grey;
     const FrameTruth t = gen.truth();
-    const int32_t info[BVB_ODO_INFO_WORDS] = {f, int32_t(t.left_ticks), int32_t(t.right_ticks), 0};
+    FrameInput fi;
+    fi.index = f;
+    fi.truth = t;
+    const bvb_pipe_frame info = pipe::frame_info(fi, 0);
     c = odometry_call(grey, w, info, p, state, false, std::to_string(w) + "x" + std::to_string(h));
     if (f == 0) {
       std::vector<std::vector<uint8_t>> bufs;
@@ -371,7 +377,7 @@ RunPlan plan_run(RunRequest &req) {
   const bvb_odo_params p = odometry_params(cam, req.params, Pose{});
   const int stages = req.params.get_int("stages", 0, 0, BVB_ODO_STAGES);
   req.params.check_all_used();
-  const int32_t info0[BVB_ODO_INFO_WORDS] = {0, 0, 0, 0}, info1[BVB_ODO_INFO_WORDS] = {1, 0, 0, stages};
+  const bvb_pipe_frame info0{0, 0, 0, 0}, info1{1, 0, 0, stages};
   CheckCall first = odometry_call(a, a.width, info0, p, {}, false, "run");
   std::vector<std::vector<uint8_t>> bufs;
   for (const auto &bb : first.bufs) bufs.push_back(bb.data);
@@ -393,7 +399,7 @@ RunPlan plan_run(RunRequest &req) {
   return plan;
 }
 
-const Family kOdometryFamily{"odometry", {"odometry"}, check, bench_call, lower_bound, plan_run};
+const Family kOdometryFamily{"pipe_odometry", {"pipe_odometry"}, check, bench_call, lower_bound, plan_run};
 BVB_FAMILY(kOdometryFamily);
 
 }  // namespace

@@ -1,4 +1,5 @@
-// The visual odometry pipeline (firmware/c/pipe_odometry.c, bvb/pipe_odometry.h) as the harness
+// The visual odometry pipeline (firmware/c/pipe_odometry.c, bvb/pipe_odometry.h; registry entry
+// pipe_odometry, bfbench pipeline odometry) as the harness
 // sees it: its parameters, one frame's call, and its accuracy against the ground truth split
 // into the path's turns and straight legs.
 #pragma once
@@ -16,11 +17,11 @@ namespace bvb {
 // key is read so that Params::check_all_used can reject unknown ones).
 bvb_odo_params odometry_params(const Camera &cam, Params &params, const Pose &start);
 
-// One frame's call: frame (stride = width), info, params, state (persistent in a pipeline run),
-// result, scratch; the host reference runs bvb_odometry_c on the same buffers.
-CheckCall odometry_call(const Image &grey, int stride, const int32_t info[BVB_ODO_INFO_WORDS],
-                        const bvb_odo_params &p, std::vector<uint8_t> state, bool persistent,
-                        const std::string &name);
+// One frame's call of pipe_odometry: frame (rows of `stride` bytes), info, params, state
+// (persistent in a pipeline run; empty: a fresh one), result, work; the host reference runs
+// bvb_pipe_odometry_c on the same buffers.
+CheckCall odometry_call(const Image &grey, int stride, const bvb_pipe_frame &info, const bvb_odo_params &p,
+                        std::vector<uint8_t> state, bool persistent, const std::string &name);
 constexpr int kOdoStateBuf = 3, kOdoResultBuf = 4;
 
 // A turn or a straight leg of the true path: frames [first, last], first the frame before the

@@ -94,8 +94,8 @@
  * BVB_ODO_F_FWD_NONE). The result's flags say which source each frame used.
  *
  * POSE. heading_mid = heading + dtheta / 2; x += dfwd cos(heading_mid); y += dfwd sin(
- * heading_mid); heading += dtheta (not wrapped). Frame 0 (state->initialised == 0) sets the pose
- * to (start_x, start_y, start_heading) and only stores the frame, the profile and the features.
+ * heading_mid); heading += dtheta (not wrapped). Frame 0 sets the pose to (start_x, start_y,
+ * start_heading) and only stores the frame, the profile and the features.
  *
  * TRIGONOMETRY: CORDIC, 28 iterations over a table of atan(2^-i) in Q24 degrees
  * (round(atan(2^-i) * 180 / pi * 2^24)); angles in and out are Q16 degrees. Rotation mode gives
@@ -105,17 +105,20 @@
  * first), within one Q16 unit (1.5e-5 degrees) for inputs of at least 1000 (host unit tests).
  * Divisions: integer, truncating, by positive divisors; one 32-bit division per floor point.
  *
- * CALL. bvb_odometry_c and bvb_odometry_asm run the same C orchestration; the first calls the C
- * kernels, the second (Blackfin only) the assembly ones where they exist (scan-line profile and
- * shift, Harris response and NMS, LK pyramid and tracking, NCC matching and score map; Harris
- * selection is C in both). Both give identical results.
+ * CALL (the pipeline contract of bvb/pipeline.h). bvb_pipe_odometry_c runs the orchestration
+ * (bvb_pipe_odometry_run) over the C kernels, bvb_pipe_odometry_asm (firmware only, its table in
+ * firmware/pipelines/pipe_odometry_table.c) over the assembly ones: scan-line profile and shift,
+ * Harris response and NMS, LK pyramid and tracking, NCC matching and score map; the Harris
+ * selection is C in both. The two give identical results, and the host build the same again.
  *   frame: width x height bytes, stride between rows (the grey image; no alignment needed).
- *   info: BVB_ODO_INFO_WORDS int32: frame index, cumulative left and right encoder ticks.
- *   params: struct bvb_odo_params. state: bvb_odometry_state_bytes(params) bytes, 4-byte aligned,
- *   zero before the first frame, then left alone between calls. result: BVB_ODO_RESULT_WORDS
- *   int32 (BVB_ODO_R_*). scratch: bvb_odometry_scratch_bytes(params) bytes, 4-byte aligned, any
- *   contents. Returns the number of features tracked into this frame (0 in frame 0), or -1 when
- *   the parameters are out of range (nothing else written).
+ *   info: struct bvb_pipe_frame (index 0 starts the pose at start_x, start_y, start_heading and
+ *   only stores the frame, its profile and features; cumulative encoder ticks; stages).
+ *   p: struct bvb_odo_params. state: bvb_pipe_odometry_state_bytes() bytes, 4-byte aligned, left
+ *   alone between calls (frame 0 initialises it; its contents before do not matter). out: the
+ *   pose (has_pose = 1, x_q16, y_q16 in inches, heading_q16 in degrees, counter-clockwise, not
+ *   wrapped), decision BVB_PIPE_STOP (this pipeline steers nothing), diag BVB_ODO_DIAG_*.
+ *   work: bvb_pipe_odometry_work_bytes() bytes, 4-byte aligned, any contents. Returns
+ *   BVB_PIPE_STOP, or -1 when the parameters are out of range (nothing written).
  *   Limits (else -1): 16 <= width, height <= 1024, width <= stride <= 4096; 1 <= fx, fy <= 1024
  *   px; cam_height 1/16..64 in; tilt -45..45 deg; 1 <= band_rows <= 256 inside the frame; the
  *   window inside the frame, 1 <= rho <= win_w, at least one bin of overlap; key_shift,
@@ -123,56 +126,48 @@
  *   the bottom; 1 <= max_features <= BVB_ODO_MAX_FEATURES; lk_levels 1..4, lk_win odd 3..15,
  *   lk_max_iter 1..100; ncc_radius 1..5, ncc_search 1..16; tpi 1..65536 ticks per inch,
  *   wheelbase 1/16..256 in, fuse_window >= 1.
- *   Working set at 160x120 (defaults): state 27 KB (the previous frame and its pyramid),
- *   scratch 107 KB (the Harris response of the floor region is most of it); both SDRAM. */
+ *   Working set at 160x120 (the harness's defaults): state 27 KB (the previous frame and its
+ *   pyramid), work 107 KB (the Harris response of the floor region is most of it); both in
+ *   SDRAM. */
 #ifndef BVB_PIPE_ODOMETRY_H
 #define BVB_PIPE_ODOMETRY_H
 
 #include <stdint.h>
 
-#define BVB_ODO_MAX_FEATURES 128
+#include "bvb/lk.h"
+#include "bvb/pipeline.h"
+
+#define BVB_ODO_MAX_FEATURES 127
+#define BVB_ODO_STATE_VERSION 0x4F444F31 /* "ODO1" */
 
 #define BVB_ODO_TRACK_LK 0
 #define BVB_ODO_TRACK_NCC 1
 
-/* info words */
-#define BVB_ODO_INFO_FRAME 0
-#define BVB_ODO_INFO_LEFT 1
-#define BVB_ODO_INFO_RIGHT 2
-#define BVB_ODO_INFO_STAGES 3    /* > 0: stop after this many stages (profiling), else all */
-#define BVB_ODO_INFO_WORDS 4
-
-/* Stages: 1 profile (and angle bins), 2 rotation (shift search, fusion), 3 LK pyramid, 4
- * tracking, 5 floor motion, translation and pose, 6 Harris response, 7 NMS and selection, 8
- * commit (the state: pose, key profile, features, this frame and its pyramid). A call stopped
- * early leaves the state as it was (except frame 0's bin table, always the same). */
+/* Stages (info->stages = k > 0 stops after k; diag[0] says how many ran): 1 profile and angle
+ * bins, 2 rotation (shift search, fusion), 3 LK pyramid, 4 tracking, 5 floor motion,
+ * translation and pose, 6 Harris response, 7 NMS and selection, 8 commit (the state: pose, key
+ * profile, features, this frame and its pyramid). A call stopped early leaves the state as it
+ * was (except frame 0's bin table, always the same). */
 #define BVB_ODO_STAGES 8
 
-/* result words */
-#define BVB_ODO_R_X 0            /* pose after this frame, Q16 inches */
-#define BVB_ODO_R_Y 1
-#define BVB_ODO_R_HEADING 2      /* Q16 degrees, cumulative */
-#define BVB_ODO_R_DTHETA_VIS 3   /* this frame's rotation from the profile shift, Q16 degrees */
-#define BVB_ODO_R_DTHETA_ENC 4   /* ... from the encoders */
-#define BVB_ODO_R_DTHETA 5       /* ... used */
-#define BVB_ODO_R_DFWD_VIS 6     /* this frame's forward motion from the features, Q16 inches */
-#define BVB_ODO_R_DFWD_ENC 7     /* ... from the encoders */
-#define BVB_ODO_R_DFWD 8         /* ... used */
-#define BVB_ODO_R_SHIFT 9        /* profile shift, Q8 pixels */
-#define BVB_ODO_R_TRACKED 10     /* features tracked onto the floor */
-#define BVB_ODO_R_INLIERS 11
-#define BVB_ODO_R_FLAGS 12       /* BVB_ODO_F_* */
-#define BVB_ODO_R_DETECTED 13    /* features found in this frame for the next one */
-#define BVB_ODO_R_STAGES 14      /* stages run */
-#define BVB_ODO_RESULT_WORDS 15
+/* diag words of the result */
+#define BVB_ODO_DIAG_STAGES 0       /* stages run */
+#define BVB_ODO_DIAG_DTHETA_VIS 1   /* this frame's rotation from the profile shift, Q16 degrees */
+#define BVB_ODO_DIAG_DTHETA_ENC 2   /* ... from the encoders */
+#define BVB_ODO_DIAG_DTHETA 3       /* ... used */
+#define BVB_ODO_DIAG_DFWD_VIS 4     /* this frame's forward motion from the features, Q16 inches */
+#define BVB_ODO_DIAG_DFWD_ENC 5     /* ... from the encoders */
+#define BVB_ODO_DIAG_DFWD 6         /* ... used */
+#define BVB_ODO_DIAG_POINTS 7       /* flags | inliers << 8 | points on the floor << 16 |
+                                       features found for the next frame << 24 */
 
+/* flags, bits 0-7 of diag[BVB_ODO_DIAG_POINTS] */
 #define BVB_ODO_F_ROT_ENC 1      /* rotation taken from the encoders */
 #define BVB_ODO_F_FWD_ENC 2      /* translation taken from the encoders */
 #define BVB_ODO_F_FWD_NONE 4     /* no visual translation (too few inliers) */
 #define BVB_ODO_F_ROT_WIN 8      /* ... because of the window test */
 
 struct bvb_odo_params {
-  int32_t width, height, stride;
   int32_t fx, fy, cx, cy;          /* Q8 pixels */
   int32_t cam_height;              /* Q16 inches */
   int32_t tilt;                    /* Q16 degrees below the horizontal, -45..45 */
@@ -185,7 +180,7 @@ struct bvb_odo_params {
   int32_t shift_fit;               /* sub-pixel step: 0 none, 1 parabola, 2 equiangular */
   int32_t rot_bins;                /* 1: compare the profile in angle bins; 0: in columns */
   int32_t key_shift, key_frames;   /* a new key profile after this shift (bins) or frames */
-  int32_t key_still;               /* ... or when the shift is below this (bins) */
+  int32_t key_still;               /* ... or when the shift changed by less (bins) */
   /* translation */
   int32_t tracker;                 /* BVB_ODO_TRACK_* */
   int32_t max_range;               /* Q16 inches of floor ahead of the camera: sets floor_y0 */
@@ -203,21 +198,52 @@ struct bvb_odo_params {
   int32_t fuse_window;             /* frames */
 };
 
+/* The kernels one build calls. */
+struct bvb_odo_kernels {
+  void (*profile)(const uint8_t *src, int32_t width, int32_t rows, int32_t stride, uint8_t *profile,
+                  void *scratch);
+  void (*shift)(const uint8_t *p1, const uint8_t *p2, int32_t w, int32_t rho, int32_t *result,
+                uint32_t *curve);
+  void (*harris_response)(const uint8_t *src, int32_t *dst, int32_t width, int32_t height,
+                          int32_t src_stride, int32_t dst_stride, void *scratch);
+  int32_t (*harris_nms)(const int32_t *resp, int32_t width, int32_t height, int32_t stride,
+                        int32_t threshold, int32_t *cand, int32_t *count, void *scratch);
+  void (*lk_pyramid)(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
+                     int32_t levels, uint8_t *pyr);
+  void (*lk_track)(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_t *next,
+                   const uint8_t *next_pyr, int32_t width, int32_t height, int32_t stride,
+                   const struct bvb_lk_params *params, const int32_t *in, int32_t *out, void *scratch);
+  void (*ncc_match)(const uint8_t *frame1, const uint8_t *frame2, int32_t stride, int32_t width,
+                    int32_t height, const int16_t *points, int32_t npoints, int32_t radius,
+                    int32_t search, int16_t *results, void *scratch);
+  void (*ncc_scoremap)(const uint8_t *frame1, const uint8_t *frame2, int32_t stride, int32_t width,
+                       int32_t height, int32_t x, int32_t y, int32_t radius, int32_t search,
+                       int16_t *map, void *scratch);
+};
+
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* Bytes of state and scratch for these parameters (0 when they are out of range). */
-uint32_t bvb_odometry_state_bytes(const struct bvb_odo_params *p);
-uint32_t bvb_odometry_scratch_bytes(const struct bvb_odo_params *p);
+/* Bytes of state and work for a frame size and these parameters (0 when out of range). */
+uint32_t bvb_pipe_odometry_state_bytes(int32_t width, int32_t height, int32_t stride,
+                                       const struct bvb_odo_params *p);
+uint32_t bvb_pipe_odometry_work_bytes(int32_t width, int32_t height, int32_t stride,
+                                      const struct bvb_odo_params *p);
 /* The first image row of the feature region (floor nearer than max_range), as the pipeline
  * computes it; -1 when the parameters are out of range. */
-int32_t bvb_odometry_floor_y0(const struct bvb_odo_params *p);
+int32_t bvb_pipe_odometry_floor_y0(int32_t width, int32_t height, int32_t stride, const struct bvb_odo_params *p);
 
-int32_t bvb_odometry_c(const uint8_t *frame, const int32_t *info, const struct bvb_odo_params *params,
-                       uint8_t *state, int32_t *result, void *scratch);
-int32_t bvb_odometry_asm(const uint8_t *frame, const int32_t *info, const struct bvb_odo_params *params,
-                         uint8_t *state, int32_t *result, void *scratch);
+int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *k, const uint8_t *frame, int32_t width,
+                              int32_t height, int32_t stride, const struct bvb_pipe_frame *info,
+                              const struct bvb_odo_params *p, uint8_t *state, struct bvb_pipe_result *out,
+                              void *work);
+int32_t bvb_pipe_odometry_c(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,
+                            const struct bvb_pipe_frame *info, const struct bvb_odo_params *p, uint8_t *state,
+                            struct bvb_pipe_result *out, void *work);
+int32_t bvb_pipe_odometry_asm(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,
+                              const struct bvb_pipe_frame *info, const struct bvb_odo_params *p,
+                              uint8_t *state, struct bvb_pipe_result *out, void *work);
 
 /* The fixed-point trigonometry, exported for the host tests. */
 void bvb_odo_sincos(int32_t angle_q16deg, int32_t *cos_q30, int32_t *sin_q30);
