@@ -126,9 +126,9 @@
  *   the bottom; 1 <= max_features <= BVB_ODO_MAX_FEATURES; lk_levels 1..4, lk_win odd 3..15,
  *   lk_max_iter 1..100; ncc_radius 1..5, ncc_search 1..16; tpi 1..65536 ticks per inch,
  *   wheelbase 1/16..256 in, fuse_window >= 1.
- *   Working set at 160x120 (the harness's defaults): state 27 KB (the previous frame and its
- *   pyramid), work 107 KB (the Harris response of the floor region is most of it); both in
- *   SDRAM. */
+ *   Working set with the harness's defaults: state 26,948 bytes at 160x120 (the previous frame
+ *   and its pyramid; 104,412 at 320x240), work 96,004 bytes (304,064; the Harris response of
+ *   the floor region is most of it); both in SDRAM. */
 #ifndef BVB_PIPE_ODOMETRY_H
 #define BVB_PIPE_ODOMETRY_H
 
