@@ -103,7 +103,7 @@ static int32_t mul_q30(int32_t v, int32_t c) { return (int32_t)shr_round((int64_
 /* ---- layout ---- */
 
 struct odo_state {
-  int32_t version;        /* written in frame 0; the state of an earlier frame is trusted only with it */
+  int32_t version;       /* written in frame 0: a state without it is started afresh */
   int32_t frames;
   int32_t x, y, heading;
   int32_t left, right;
@@ -115,8 +115,8 @@ struct odo_state {
   int32_t win_age;
   int32_t nfeat;
   int32_t feat[2 * BVB_ODO_MAX_FEATURES]; /* Q16 positions in the previous frame */
-  /* then: the previous frame's profile (width bytes, padded to 4), the previous frame
-   * (stride x height, padded), its LK pyramid (levels 1..) */
+  /* then: the angle bins' columns (bins int32, made in frame 0), the key profile (bins bytes,
+   * padded to 4), the previous frame (stride x height, padded), its LK pyramid (levels 1..) */
 };
 
 #define ALIGN4(n) (((n) + 3u) & ~3u)
@@ -136,7 +136,7 @@ struct odo_setup {
   uint32_t pyr_bytes;
   /* state offsets */
   uint32_t s_table, s_profile, s_frame, s_pyr, s_total;
-  /* scratch offsets */
+  /* work offsets */
   uint32_t x_profile, x_bins, x_pscratch, x_result, x_curve, x_pyr, x_lkin, x_lkout, x_lkscr, x_points,
       x_nres, x_nscr, x_map, x_pairs, x_d, x_e, x_sort, x_resp, x_hscr, x_nmsscr, x_cand, x_corners, x_total;
 };
@@ -287,6 +287,14 @@ int32_t bvb_pipe_odometry_floor_y0(int32_t width, int32_t height, int32_t stride
 }
 
 /* ---- pieces ---- */
+
+/* a - b for cumulative tick counts that may have wrapped past 2^31 (the difference itself is
+ * small), without signed overflow. */
+static int32_t tick_diff(int32_t a, int32_t b) {
+  const uint32_t d = (uint32_t)a - (uint32_t)b;
+  if (d < 0x80000000u) return (int32_t)d;
+  return d == 0x80000000u ? INT32_MIN : -(int32_t)(0u - d);
+}
 
 /* The heading change (Q16 degrees) of tick increments dl, dr: (dr - dl) / (tpi wheelbase) rad. */
 static int32_t enc_angle(int32_t dl, int32_t dr, const struct bvb_odo_params *p) {
@@ -548,7 +556,7 @@ static void rotation(const struct bvb_odo_kernels *ops, const struct bvb_odo_par
   const int32_t rel = p->rot_bins ? (int32_t)div_round((int64_t)f->shift * s->dphi_row, 256)
                                   : bvb_odo_atan2(f->shift, s->gain_q8);
   f->dth_vis = st->key_heading + rel - st->heading;
-  const int32_t dl = left - st->left, dr = right - st->right;
+  const int32_t dl = tick_diff(left, st->left), dr = tick_diff(right, st->right);
   f->dfwd_enc = (int32_t)div_round((int64_t)(dl + dr) * ((int64_t)1 << 23), p->tpi);
   f->dth_enc = enc_angle(dl, dr, p);
   f->dth = f->motion = f->dth_vis;
@@ -559,7 +567,7 @@ static void rotation(const struct bvb_odo_kernels *ops, const struct bvb_odo_par
   }
   /* Over the window the encoders' heading change comes from whole tick counts, so their
    * rounding does not add up: a slow visual drift (a moving object in the band) shows. */
-  const int32_t e = enc_angle(left - st->win_left, right - st->win_right, p);
+  const int32_t e = enc_angle(tick_diff(left, st->win_left), tick_diff(right, st->win_right), p);
   if (iabs(e) <= p->fuse_rot_tol && iabs(st->heading + f->dth - st->win_heading - e) > p->fuse_rot_tol) {
     f->dth = st->win_heading + e - st->heading; /* this frame's turn and the window's correction */
     f->flags |= BVB_ODO_F_ROT_ENC | BVB_ODO_F_ROT_WIN;
