@@ -242,7 +242,7 @@ std::vector<Size> parse_sizes(Args &args) {
 int cmd_bench(Args &args) {
   if (help_requested(args,
                      "usage: bfbench bench [-k GLOB] [--size WxH]... [--json FILE] [--csv FILE]\n"
-                     "                     [--asm-only] [-j N] [--firmware ELF]\n\n"
+                     "                     [--markdown FILE] [--asm-only] [-j N] [--firmware ELF]\n\n"
                      "Simulator cycles per call and per pixel for each kernel's C reference built for\n"
                      "the Blackfin and for its assembly, the empty-call overhead measured and\n"
                      "subtracted, the speed-up, and the kernel's stated lower bound. Sizes default to\n"
@@ -252,7 +252,8 @@ int cmd_bench(Args &args) {
   opts.kernel_glob = args.value("-k", "*", "--kernel");
   auto sizes = parse_sizes(args);
   if (!sizes.empty()) opts.sizes = sizes;
-  std::string json_path = args.value("--json", ""), csv_path = args.value("--csv", "");
+  std::string json_path = args.value("--json", ""), csv_path = args.value("--csv", ""),
+              md_path = args.value("--markdown", "");
   opts.run_c = !args.flag("--asm-only");
   opts.jobs = int(to_long(args.value("-j", std::to_string(default_jobs())), "-j", 1, 256));
   opts.progress = isatty(2);
@@ -268,6 +269,10 @@ int cmd_bench(Args &args) {
   if (!csv_path.empty()) {
     std::string c = bench_csv(rows);
     write_file_atomic(csv_path, c.data(), c.size());
+  }
+  if (!md_path.empty()) {
+    std::string m = bench_markdown(rows);
+    write_file_atomic(md_path, m.data(), m.size());
   }
   for (const auto &r : rows)
     if (!r.error.empty()) return 1;

@@ -128,6 +128,21 @@ std::string bench_csv(const std::vector<BenchRow> &rows) {
   return o.str();
 }
 
+std::string bench_markdown(const std::vector<BenchRow> &rows) {
+  std::ostringstream o;
+  o << "| kernel | case | C cycles | asm cycles | speed-up | C c/px | asm c/px | bound c/px |\n"
+       "|---|---|---:|---:|---:|---:|---:|---:|\n";
+  for (const auto &r : rows) {
+    const double px = r.pixels > 0 ? r.pixels : 1;
+    o << "| " << r.kernel << " | " << r.case_name << " | " << (r.has_c ? group(r.c_cycles) : "-") << " | "
+      << (r.has_asm ? group(r.asm_cycles) : "-") << " | "
+      << (r.has_c && r.has_asm && r.asm_cycles ? fmt("%.1fx", double(r.c_cycles) / r.asm_cycles) : "-") << " | "
+      << (r.has_c ? fmt("%.2f", r.c_cycles / px) : "-") << " | " << (r.has_asm ? fmt("%.2f", r.asm_cycles / px) : "-")
+      << " | " << (r.lower_bound > 0 ? fmt("%.2f", r.lower_bound / px) : "-") << " |\n";
+  }
+  return o.str();
+}
+
 std::vector<Budget> load_budgets(const std::string &path) {
   auto bytes = read_file(path);
   json::Value v = json::parse(std::string(bytes.begin(), bytes.end()), path);

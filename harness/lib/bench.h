@@ -35,6 +35,8 @@ std::vector<BenchRow> run_bench(const Target &target, const BenchOptions &opts);
 std::string bench_table(const std::vector<BenchRow> &rows, uint32_t null_call_cycles);
 std::string bench_json(const std::vector<BenchRow> &rows, uint32_t null_call_cycles);
 std::string bench_csv(const std::vector<BenchRow> &rows);
+// The README's cycle table.
+std::string bench_markdown(const std::vector<BenchRow> &rows);
 
 struct Budget {
   std::string key;  // kernel/impl/case
