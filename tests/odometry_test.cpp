@@ -1,0 +1,91 @@
+// The odometry pipeline's fixed-point trigonometry (CORDIC) against the C library's doubles,
+// and its parameter checks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "bvb/pipe_odometry.h"
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The SRV-1 scene camera at 160x120 (harness/scene/camera.h) and the pipeline's usual settings.
+bvb_odo_params params_160x120() {
+  bvb_odo_params p{};
+  p.fx = p.fy = 140 * 256;
+  p.cx = 79 * 256 + 128, p.cy = 59 * 256 + 128;
+  p.cam_height = 4 << 16, p.tilt = 10 << 16, p.cam_offset = 0;
+  p.band_y0 = 21, p.band_rows = 32, p.win_x0 = 8, p.win_w = 144, p.rho = 104;
+  p.shift_fit = 1, p.rot_bins = 1, p.key_shift = 24, p.key_frames = 8, p.key_still = 2;
+  p.tracker = BVB_ODO_TRACK_LK, p.max_range = 24 << 16;
+  p.max_features = 32, p.min_distance = 8, p.harris_threshold = 300;
+  p.lk_levels = 3, p.lk_win = 7, p.lk_max_iter = 10, p.lk_eps = 655, p.lk_min_det = 1;
+  p.ncc_radius = 5, p.ncc_search = 8, p.ncc_subpixel = 1;
+  p.inlier_tol = 6554, p.min_inliers = 5;
+  p.tpi = 50 * 256, p.wheelbase = 4 << 16, p.fuse_rot_tol = 65536, p.fuse_trans_tol = 6554, p.fuse_window = 16;
+  return p;
+}
+
+TEST(OdometryCordic, SinCosWithinTwoToTheMinus25) {
+  // Every 0.37 degrees over several turns either way, plus the reduction's edges.
+  std::vector<int32_t> angles;
+  for (int32_t a = -1080 * 65536; a <= 1080 * 65536; a += 24301) angles.push_back(a);
+  for (int32_t d : {-270, -180, -90, 0, 90, 180, 270, 360})
+    for (int32_t e : {-1, 0, 1}) angles.push_back(d * 65536 + e);
+  for (int32_t a : angles) {
+    int32_t c, s;
+    bvb_odo_sincos(a, &c, &s);
+    const double rad = a / 65536.0 * kPi / 180.0;
+    ASSERT_NEAR(c / 1073741824.0, std::cos(rad), 1.0 / (1 << 25)) << "angle " << a / 65536.0;
+    ASSERT_NEAR(s / 1073741824.0, std::sin(rad), 1.0 / (1 << 25)) << "angle " << a / 65536.0;
+  }
+}
+
+TEST(OdometryCordic, Atan2WithinOneUnit) {
+  // Small and large magnitudes (the scaling), every direction of the right half plane.
+  for (int32_t mag : {3, 1000, 1 << 20, (1 << 30) + 12345}) {
+    for (int k = -89; k <= 89; k += 2) {
+      const double r = k * kPi / 180.0 + 0.0123;
+      const int32_t x = int32_t(std::lround(mag * std::cos(r))), y = int32_t(std::lround(mag * std::sin(r)));
+      if (x <= 0) continue;
+      const double want = std::atan2(double(y), double(x)) * 180.0 / kPi * 65536.0;
+      // Inputs below 10 carry their own rounding of the direction: allow it.
+      const double tol = mag < 10 ? 65536.0 * 15 : 1;
+      ASSERT_NEAR(bvb_odo_atan2(y, x), want, tol) << "y " << y << " x " << x;
+    }
+  }
+  EXPECT_EQ(bvb_odo_atan2(0, 5), 0);
+  EXPECT_NEAR(bvb_odo_atan2(7, 7), 45 * 65536, 1);
+  EXPECT_NEAR(bvb_odo_atan2(-7, 7), -45 * 65536, 1);
+}
+
+TEST(OdometryParams, FloorRegionStartsWhereTheFloorIsMaxRangeAway) {
+  // 160x120, fx = 140, camera 4 in up, 10 deg down: the floor 24 in ahead of the camera's foot
+  // is seen at yn = (4 cos 10 - 24 sin 10) / (24 cos 10 + 4 sin 10) = -0.00939, row 58.19.
+  const bvb_odo_params p = params_160x120();
+  const double t = 10 * kPi / 180, yn = (4 * std::cos(t) - 24 * std::sin(t)) / (24 * std::cos(t) + 4 * std::sin(t));
+  EXPECT_EQ(bvb_pipe_odometry_floor_y0(160, 120, 160, &p), int(std::ceil(59.5 + 140 * yn)));
+  EXPECT_GT(bvb_pipe_odometry_state_bytes(160, 120, 160, &p), uint32_t(160 * 120));
+  EXPECT_GT(bvb_pipe_odometry_work_bytes(160, 120, 160, &p), uint32_t(4 * 160 * (120 - 59)));
+}
+
+TEST(OdometryParams, OutOfRangeIsRejectedWithoutWriting) {
+  bvb_odo_params p = params_160x120();
+  EXPECT_GT(bvb_pipe_odometry_state_bytes(160, 120, 160, &p), 0u);
+  p.lk_win = 8;  // even
+  EXPECT_EQ(bvb_pipe_odometry_state_bytes(160, 120, 160, &p), 0u);
+  std::vector<uint8_t> frame(160 * 120), state(64, 0xAB), work(64);
+  bvb_pipe_result result;
+  std::memset(&result, 0x5A, sizeof result);
+  const bvb_pipe_frame info{0, 0, 0, 0};
+  EXPECT_EQ(bvb_pipe_odometry_c(frame.data(), 160, 120, 160, &info, &p, state.data(), &result, work.data()), -1);
+  for (uint8_t b : state) EXPECT_EQ(b, 0xAB);
+  const uint8_t *r = reinterpret_cast<const uint8_t *>(&result);
+  for (size_t i = 0; i < sizeof result; ++i) EXPECT_EQ(r[i], 0x5A);
+}
+
+}  // namespace
