@@ -271,7 +271,31 @@ bool flag(std::vector<std::string> &a, const std::string &name) {
   return true;
 }
 
-void write_svgs(const std::string &prefix, const std::string &name, const PipelineRun &run) {
+// The arena's static obstacles as outlines in their own colours, under the trajectory.
+std::vector<Shape> arena_shapes(const World &w) {
+  std::vector<Shape> out;
+  for (const Obstacle &ob : w.obstacles) {
+    if (ob.mover >= 0) continue;
+    char fill[8];
+    auto c = [](float v) { return int(std::lround(std::clamp(v, 0.0f, 255.0f))); };
+    std::snprintf(fill, sizeof fill, "#%02x%02x%02x", c(ob.color.r), c(ob.color.g), c(ob.color.b));
+    Shape sh{fill, {}, {}};
+    if (ob.kind == ObstacleKind::Cylinder) {
+      for (int k = 0; k < 32; ++k) {
+        const double a = 2 * M_PI * k / 32;
+        sh.x.push_back(ob.centre.x + ob.radius * std::cos(a));
+        sh.y.push_back(ob.centre.y + ob.radius * std::sin(a));
+      }
+    } else {
+      for (const Vec2 &v : ob.corners) sh.x.push_back(v.x), sh.y.push_back(v.y);
+    }
+    out.push_back(std::move(sh));
+  }
+  return out;
+}
+
+void write_svgs(const std::string &prefix, const std::string &name, const PipelineRun &run,
+                const World *arena) {
   Series truth{"true path", "#1f77b4", {}, {}}, est{"estimated", "#d62728", {}, {}};
   Series cyc{"cycles per frame", "#2ca02c", {}, {}};
   for (const auto &r : run.frames) {
@@ -286,7 +310,8 @@ void write_svgs(const std::string &prefix, const std::string &name, const Pipeli
   }
   std::vector<Series> path = {truth};
   if (!est.x.empty()) path.push_back(est);
-  std::string t = svg_plot(name + ": trajectory", "x (in)", "y (in)", path, true);
+  std::string t = svg_plot(name + ": trajectory", "x (in)", "y (in)", path, true,
+                           arena ? arena_shapes(*arena) : std::vector<Shape>{});
   write_file_atomic(prefix + "-trajectory.svg", t.data(), t.size());
   std::string c = svg_plot(name + ": simulator cycles per frame", "frame", "cycles", {cyc}, false);
   write_file_atomic(prefix + "-cycles.svg", c.data(), c.size());
@@ -365,7 +390,7 @@ int pipeline_command(int argc, char **argv) {
       std::string c = pipeline_csv(run);
       write_file_atomic(csv, c.data(), c.size());
     }
-    if (!svg.empty()) write_svgs(svg, def->name, run);
+    if (!svg.empty()) write_svgs(svg, def->name, run, dir ? &dir->arena : &gen->arena());
     return run.mismatches.empty() ? 0 : 1;
   } catch (const InputError &e) {
     std::fprintf(stderr, "bfbench pipeline: %s\n", e.what());

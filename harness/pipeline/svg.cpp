@@ -30,6 +30,7 @@ double nice_step(double range) {
 
 std::string num(double v) {
   char b[32];
+  if (std::fabs(v) < 1e-9) v = 0;  // a tick computed as -0 reads as zero
   if (std::fabs(v) >= 1e6) std::snprintf(b, sizeof b, "%.3g", v);
   else std::snprintf(b, sizeof b, "%g", std::round(v * 1000) / 1000);
   return b;
@@ -38,25 +39,31 @@ std::string num(double v) {
 }  // namespace
 
 std::string svg_plot(const std::string &title, const std::string &xlabel, const std::string &ylabel,
-                     const std::vector<Series> &series, bool equal_aspect) {
+                     const std::vector<Series> &series, bool equal_aspect,
+                     const std::vector<Shape> &shapes) {
   const double W = 720, H = 480, L = 80, R = 20, T = 40, B = 60;
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-  for (const auto &s : series)
-    for (size_t i = 0; i < s.x.size(); ++i) {
-      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
-      x0 = std::min(x0, s.x[i]), x1 = std::max(x1, s.x[i]);
-      y0 = std::min(y0, s.y[i]), y1 = std::max(y1, s.y[i]);
+  auto extend = [&](const std::vector<double> &xs, const std::vector<double> &ys) {
+    for (size_t i = 0; i < xs.size() && i < ys.size(); ++i) {
+      if (!std::isfinite(xs[i]) || !std::isfinite(ys[i])) continue;
+      x0 = std::min(x0, xs[i]), x1 = std::max(x1, xs[i]);
+      y0 = std::min(y0, ys[i]), y1 = std::max(y1, ys[i]);
     }
+  };
+  for (const auto &s : series) extend(s.x, s.y);
+  for (const auto &s : shapes) extend(s.x, s.y);
   if (x0 > x1) x0 = 0, x1 = 1, y0 = 0, y1 = 1;
   if (x1 - x0 < 1e-9) x0 -= 1, x1 += 1;
   if (y1 - y0 < 1e-9) y0 -= 1, y1 += 1;
+  const double mx = 0.03 * (x1 - x0), my = 0.03 * (y1 - y0);
+  x0 -= mx, x1 += mx, y0 -= my, y1 += my;
   const double pw = W - L - R, ph = H - T - B;
   double sx = pw / (x1 - x0), sy = ph / (y1 - y0);
-  if (equal_aspect) {
-    const double s = std::min(sx, sy);
-    x1 = x0 + pw / s;
-    y1 = y0 + ph / s;
-    sx = sy = s;
+  if (equal_aspect) {  // the data centred in the axis that gets wider
+    const double sc = std::min(sx, sy), cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+    x0 = cx - pw / sc / 2, x1 = cx + pw / sc / 2;
+    y0 = cy - ph / sc / 2, y1 = cy + ph / sc / 2;
+    sx = sy = sc;
   }
   auto X = [&](double v) { return L + (v - x0) * sx; };
   auto Y = [&](double v) { return T + ph - (v - y0) * sy; };
@@ -78,12 +85,24 @@ std::string svg_plot(const std::string &title, const std::string &xlabel, const 
   o << "<text x=\"" << L + pw / 2 << "\" y=\"" << H - 16 << "\" text-anchor=\"middle\">" << esc(xlabel)
     << "</text>\n<text x=\"18\" y=\"" << T + ph / 2 << "\" text-anchor=\"middle\" transform=\"rotate(-90 18 "
     << T + ph / 2 << ")\">" << esc(ylabel) << "</text>\n";
-  int li = 0;
+  for (const auto &s : shapes) {
+    o << "<polygon fill=\"" << s.fill << "\" stroke=\"#555\" stroke-width=\"0.5\" points=\"";
+    for (size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) o << X(s.x[i]) << "," << Y(s.y[i]) << " ";
+    o << "\"/>\n";
+  }
   for (const auto &s : series) {
     o << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"2\" points=\"";
     for (size_t i = 0; i < s.x.size(); ++i)
       if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) o << X(s.x[i]) << "," << Y(s.y[i]) << " ";
     o << "\"/>\n";
+  }
+  // The legend last, on a white ground: a trajectory or an obstacle may run under it.
+  size_t longest = 0;
+  for (const auto &s : series) longest = std::max(longest, s.label.size());
+  o << "<rect x=\"" << L + 6 << "\" y=\"" << T + 6 << "\" width=\"" << 44 + 7 * longest << "\" height=\""
+    << 18 * series.size() + 4 << "\" fill=\"white\" fill-opacity=\"0.85\"/>\n";
+  int li = 0;
+  for (const auto &s : series) {
     const double ly = T + 16 + 18 * li++;
     o << "<line x1=\"" << L + 12 << "\" y1=\"" << ly << "\" x2=\"" << L + 36 << "\" y2=\"" << ly
       << "\" stroke=\"" << s.colour << "\" stroke-width=\"3\"/><text x=\"" << L + 42 << "\" y=\"" << ly + 4
