@@ -162,3 +162,436 @@ _bvb_free_space_asm:
 	(r7:4, p5:3) = [sp++];
 	rts;
 	.size _bvb_free_space_asm, . - _bvb_free_space_asm
+
+/* ---- bvb_region_grow_asm ---- */
+
+/* Locals (below the saved registers). */
+#define L_CAP 0
+#define L_TOL 4
+#define L_BBMIN 8		/* (min_y << 16) | min_x */
+#define L_BBMAX 12		/* (max_y << 16) | max_x */
+#define L_DROP 16
+#define L_MBASE 20
+#define L_IBASE 24
+#define L_W1 28			/* width - 1 */
+#define L_H1 32			/* height - 1 */
+#define L_UPK 36		/* -0x10000: y - 1 in a packed (y << 16) | x */
+#define L_DNK 40		/* +0x10000 */
+#define L_SIZE 44
+/* Arguments: 32 bytes of saved registers, then the locals. */
+#define RG_MSTRIDE (L_SIZE + 44)
+#define RG_WIDTH (L_SIZE + 48)
+#define RG_HEIGHT (L_SIZE + 52)
+#define RG_PARAMS (L_SIZE + 56)
+#define RG_QUEUE (L_SIZE + 60)
+#define RG_QCAP (L_SIZE + 64)
+#define RG_STATS (L_SIZE + 68)
+
+/* Register use in the growing loop:
+ *   R0 the pixel taken from the queue, (y << 16) | x      R4 count  R5 sum  R6 tol * count
+ *   R7 (img_stride << 16) | mask_stride, for the address  R1-R3 scratch
+ *   P0 its image byte, P1 its mask byte, P4 mask_stride, P5 img_stride, P2/P3 the row above or
+ *   below, FP free queue slots (queue_cap - queued), I0/I1 queue head/tail (circular, B0/L0,
+ *   B1/L1), A0/A1 sum_x/sum_y.
+ * While growing, the mask marks the frame's border pixels: 1 = border, not in the region,
+ * 254 = border, in the region (interior: 0 / 255). A neighbour is free when its byte is < 2, it
+ * joins as ~byte (0 -> 255, 1 -> 254), and a pixel taken from the queue whose own byte is even
+ * is on the border, where each neighbour is first checked against the frame. The border bytes
+ * are turned back into 0 / 255 at the end. */
+
+/* Join: R1 = the neighbour's mask byte, R3 = its intensity, R2 = its (y << 16) | x; \mark is the
+ * store of ~R1 to its mask byte. */
+.macro JOIN tag, back, mark
+	r1 = ~r1;
+	\mark
+	r4 += 1;
+	r5 = r5 + r3;
+	r1 = [sp + L_TOL];
+	r6 = r6 + r1;
+	r1 = [sp + L_BBMIN];
+	r1 = min (r1, r2) (v);
+	[sp + L_BBMIN] = r1;
+	r1 = [sp + L_BBMAX];
+	r1 = max (r1, r2) (v);
+	[sp + L_BBMAX] = r1;
+	r1 = 1;
+	a1 += r2.h * r1.l, a0 += r2.l * r1.l (is);
+	cc = fp == 0;
+	if cc jump .Ldrop_\tag;
+	[i1++] = r2;
+	fp += -1;
+	jump \back;
+.Ldrop_\tag:
+	r1 = [sp + L_DROP];
+	r1 += 1;
+	[sp + L_DROP] = r1;
+	jump \back;
+.endm
+
+/* The tolerance test of a free neighbour, intensity in R3: |I * count - sum| <= tol * count. */
+.macro TOLTEST back
+	r2 = r3;
+	r2 *= r4;
+	r2 = r2 - r5;
+	r2 = abs r2;
+	cc = r2 <= r6;
+	if !cc jump \back;
+.endm
+
+/* One neighbour, at row offset \row (-1, 0, 1) and column offset \col, of the pixel in R0 (P0,
+ * P1). \chk: 1 = check it against the frame first (the pixel is on the border). */
+.macro NB tag, row, col, chk
+	.if \chk
+	  .if \col == -1
+	r1 = r0.l (z);
+	cc = r1 == 0;
+	if cc jump .Lb_\tag;
+	  .endif
+	  .if \col == 1
+	r1 = r0.l (z);
+	r2 = [sp + L_W1];
+	cc = r1 < r2;
+	if !cc jump .Lb_\tag;
+	  .endif
+	  .if \row == -1
+	r1 = r0 >> 16;
+	cc = r1 == 0;
+	if cc jump .Lb_\tag;
+	  .endif
+	  .if \row == 1
+	r1 = r0 >> 16;
+	r2 = [sp + L_H1];
+	cc = r1 < r2;
+	if !cc jump .Lb_\tag;
+	  .endif
+	.endif
+	.if \row == 0
+	r1 = b[p1 + \col\()] (z);
+	.endif
+	.if \row == -1
+	p2 = p1;
+	p2 -= p4;
+	r1 = b[p2 + \col\()] (z);
+	.endif
+	.if \row == 1
+	p2 = p1 + p4;
+	r1 = b[p2 + \col\()] (z);
+	.endif
+	cc = r1 < 2;
+	if cc jump .Lv_\tag;
+.Lb_\tag:
+.endm
+
+/* The out-of-line visit of a free neighbour (P2 is still its row's mask pointer). */
+.macro NBV tag, row, col
+.Lv_\tag:
+	.if \row == 0
+	r3 = b[p0 + \col\()] (z);
+	.endif
+	.if \row == -1
+	p3 = p0;
+	p3 -= p5;
+	r3 = b[p3 + \col\()] (z);
+	.endif
+	.if \row == 1
+	p3 = p0 + p5;
+	r3 = b[p3 + \col\()] (z);
+	.endif
+	TOLTEST .Lb_\tag
+	.if \row == 0
+	r2 = r0;
+	.endif
+	.if \row == -1
+	r2 = [sp + L_UPK];
+	r2 = r0 + r2;
+	.endif
+	.if \row == 1
+	r2 = [sp + L_DNK];
+	r2 = r0 + r2;
+	.endif
+	.if \col
+	r2 += \col;
+	.endif
+	.if \row == 0
+	JOIN \tag, .Lb_\tag, "b[p1 + \col\()] = r1;"
+	.else
+	JOIN \tag, .Lb_\tag, "b[p2 + \col\()] = r1;"
+	.endif
+.endm
+
+.macro NEIGHBOURS pre, conn, chk
+	NB \pre\()l, 0, -1, \chk
+	NB \pre\()r, 0, 1, \chk
+	NB \pre\()u, -1, 0, \chk
+	NB \pre\()d, 1, 0, \chk
+	.if \conn == 8
+	NB \pre\()ul, -1, -1, \chk
+	NB \pre\()ur, -1, 1, \chk
+	NB \pre\()dl, 1, -1, \chk
+	NB \pre\()dr, 1, 1, \chk
+	.endif
+.endm
+
+.macro NEIGHBOURS_V pre, conn
+	NBV \pre\()l, 0, -1
+	NBV \pre\()r, 0, 1
+	NBV \pre\()u, -1, 0
+	NBV \pre\()d, 1, 0
+	.if \conn == 8
+	NBV \pre\()ul, -1, -1
+	NBV \pre\()ur, -1, 1
+	NBV \pre\()dl, 1, -1
+	NBV \pre\()dr, 1, 1
+	.endif
+.endm
+
+/* The loop over the queue, for connectivity \conn. */
+.macro GROW conn
+.Lloop\conn:
+	r0 = [i0++];
+	fp += 1;
+	r3 = r0.h * r7.h, r2 = r0.h * r7.l (is);
+	r1 = r0.l (z);
+	r2 = r2 + r1 (ns) || p2 = [sp + L_MBASE];
+	r3 = r3 + r1 (ns) || p3 = [sp + L_IBASE];
+	p1 = r2;
+	p0 = r3;
+	p1 = p1 + p2;
+	p0 = p0 + p3;
+	r1 = b[p1] (z);
+	cc = bittst (r1, 0);
+	if !cc jump .Lto_border\conn;
+	NEIGHBOURS f\conn, \conn, 0
+.Lnext\conn:
+	p2 = [sp + L_CAP];
+	cc = fp < p2;
+	if cc jump .Lloop\conn (bp);
+	jump.l .Lrg_done;
+.Lto_border\conn:
+	jump.l .Lborder\conn;
+	NEIGHBOURS_V f\conn, \conn
+.Lborder\conn:
+	NEIGHBOURS e\conn, \conn, 1
+	jump.l .Lnext\conn;
+	NEIGHBOURS_V e\conn, \conn
+.endm
+
+	.align 4
+	.global _bvb_region_grow_asm
+	.type _bvb_region_grow_asm, STT_FUNC
+_bvb_region_grow_asm:
+	[--sp] = (r7:4, p5:3);
+	[--sp] = fp;
+	/* The 16-bit address multiplies need strides and sizes below 2^15; larger (1-pixel-high or
+	 * -wide) frames go to the C reference. */
+	r3 = [sp + 44];
+	r3 = max (r3, r1);
+	r4 = [sp + 48];
+	r3 = max (r3, r4);
+	r4 = [sp + 52];
+	r3 = max (r3, r4);
+	r4 = 32767 (x);
+	cc = r4 < r3 (iu);
+	if !cc jump .Lrg_asm;
+	fp = [sp++];
+	(r7:4, p5:3) = [sp++];
+	jump.l _bvb_region_grow_c;
+
+.Lrg_asm:
+	sp += -L_SIZE;
+	[sp + L_IBASE] = r0;
+	[sp + L_MBASE] = r2;
+	p5 = r1;			/* img_stride */
+	r3 = [sp + RG_MSTRIDE];
+	p4 = r3;
+	r7 = pack (r1.l, r3.l);
+	r4 = [sp + RG_WIDTH];
+	r5 = [sp + RG_HEIGHT];
+	r0 = r4;
+	r0 += -1;
+	[sp + L_W1] = r0;
+	r0 = r5;
+	r0 += -1;
+	[sp + L_H1] = r0;
+	r0 = pack (r5.l, r4.l);
+	[sp + L_BBMIN] = r0;
+	r0 = -1;
+	[sp + L_BBMAX] = r0;
+	r0 = 0;
+	[sp + L_DROP] = r0;
+	r0.l = 0;
+	r0.h = 1;
+	[sp + L_DNK] = r0;
+	r0 = -r0;
+	[sp + L_UPK] = r0;
+	p2 = [sp + RG_PARAMS];
+	r0 = [p2 + 8];
+	[sp + L_TOL] = r0;
+
+	/* mask: 0 inside, 1 on the border */
+	p0 = r2;
+	p1 = r4;			/* width */
+	p3 = r5;			/* height */
+	r0 = 0;
+	lsetup (.Lclr_row, .Lclr_row_end) lc1 = p3;
+.Lclr_row:
+	p2 = p0;
+	lsetup (.Lclr, .Lclr) lc0 = p1;
+.Lclr:	b[p2++] = r0;
+.Lclr_row_end:
+	p0 = p0 + p4;
+	r0 = 1;
+	p0 = r2;			/* top row */
+	lsetup (.Lbtop, .Lbtop) lc0 = p1;
+.Lbtop:	b[p0++] = r0;
+	r1 = r5;
+	r1 += -1;
+	r1 *= r3;
+	r1 = r1 + r2;
+	p0 = r1;			/* bottom row */
+	lsetup (.Lbbot, .Lbbot) lc0 = p1;
+.Lbbot:	b[p0++] = r0;
+	p0 = r2;			/* left and right columns */
+	p2 = p0 + p1;
+	p2 += -1;
+	lsetup (.Lbside, .Lbside_end) lc0 = p3;
+.Lbside:
+	b[p0] = r0;
+	b[p2] = r0;
+	p0 = p0 + p4;
+.Lbside_end:
+	p2 = p2 + p4;
+
+	/* queue: I0 head, I1 tail, circular over queue_cap entries */
+	r0 = [sp + RG_QUEUE];
+	r1 = [sp + RG_QCAP];
+	[sp + L_CAP] = r1;
+	fp = r1;			/* free slots */
+	b0 = r0;
+	i0 = r0;
+	b1 = r0;
+	i1 = r0;
+	r1 <<= 2;
+	l0 = r1;
+	l1 = r1;
+
+	r4 = 0;
+	r5 = 0;
+	r6 = 0;
+	a1 = a0 = 0;
+
+	/* the seed joins unconditionally if it is inside the frame */
+	p2 = [sp + RG_PARAMS];
+	r0 = [p2];			/* seed_x */
+	r1 = [p2 + 4];			/* seed_y */
+	r2 = [sp + L_W1];
+	cc = r2 < r0 (iu);
+	if cc jump .Lno_seed;
+	r2 = [sp + L_H1];
+	cc = r2 < r1 (iu);
+	if !cc jump .Lseed_in;
+.Lno_seed:
+	jump.l .Lrg_done;
+.Lseed_in:
+	r0 = pack (r1.l, r0.l);
+	r3 = r0.h * r7.h, r2 = r0.h * r7.l (is);
+	r1 = r0.l (z);
+	r2 = r2 + r1 (ns);
+	r3 = r3 + r1 (ns);
+	r1 = [sp + L_MBASE];
+	r2 = r2 + r1;
+	r1 = [sp + L_IBASE];
+	r3 = r3 + r1;
+	p2 = r2;
+	p3 = r3;
+	r1 = b[p2] (z);
+	r3 = b[p3] (z);
+	r2 = r0;
+	JOIN seed, .Lseeded, "b[p2] = r1;"
+.Lseeded:
+	p2 = [sp + L_CAP];
+	cc = fp < p2;
+	if !cc jump .Lno_seed;
+	p2 = [sp + RG_PARAMS];
+	r0 = [p2 + 12];
+	r1 = 8;
+	cc = r0 == r1;
+	if cc jump .Lgo8;
+	jump.l .Lloop4;
+.Lgo8:
+	jump.l .Lloop8;
+
+	GROW 4
+	GROW 8
+
+.Lrg_done:
+	/* border bytes back to 0 / 255: -(byte >> 7) */
+	p0 = [sp + L_MBASE];
+	r0 = [sp + RG_WIDTH];
+	p1 = r0;
+	r3 = [sp + RG_HEIGHT];
+	p3 = r3;
+	p2 = p0;
+	lsetup (.Lftop, .Lftop_end) lc0 = p1;
+.Lftop:	r0 = b[p2] (z);
+	r0 >>= 7;
+	r0 = -r0;
+.Lftop_end:
+	b[p2++] = r0;
+	r1 = r3;
+	r1 += -1;
+	r2 = p4;
+	r1 *= r2;
+	r2 = p0;
+	r1 = r1 + r2;
+	p2 = r1;
+	lsetup (.Lfbot, .Lfbot_end) lc0 = p1;
+.Lfbot:	r0 = b[p2] (z);
+	r0 >>= 7;
+	r0 = -r0;
+.Lfbot_end:
+	b[p2++] = r0;
+	p2 = p0 + p1;
+	p2 += -1;
+	lsetup (.Lfside, .Lfside_end) lc0 = p3;
+.Lfside:
+	r0 = b[p0] (z);
+	r0 >>= 7;
+	r0 = -r0;
+	b[p0] = r0;
+	r0 = b[p2] (z);
+	r0 >>= 7;
+	r0 = -r0;
+	b[p2] = r0;
+	p0 = p0 + p4;
+.Lfside_end:
+	p2 = p2 + p4;
+
+	/* stats */
+	p0 = [sp + RG_STATS];
+	[p0] = r4;
+	[p0 + 4] = r5;
+	r0 = [sp + L_BBMIN];
+	r1 = r0.l (x);
+	[p0 + 8] = r1;
+	r1 = r0 >>> 16;
+	[p0 + 12] = r1;
+	r0 = [sp + L_BBMAX];
+	r1 = r0.l (x);
+	[p0 + 16] = r1;
+	r1 = r0 >>> 16;
+	[p0 + 20] = r1;
+	r0 = a0 (is);
+	[p0 + 24] = r0;
+	r1 = a1 (is);
+	[p0 + 28] = r1;
+	r0 = [sp + L_DROP];
+	[p0 + 32] = r0;
+	r0 = r4;
+	l0 = 0;
+	l1 = 0;
+	sp += L_SIZE;
+	fp = [sp++];
+	(r7:4, p5:3) = [sp++];
+	rts;
+	.size _bvb_region_grow_asm, . - _bvb_region_grow_asm
