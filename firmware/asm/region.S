@@ -165,19 +165,20 @@ _bvb_free_space_asm:
 
 /* ---- bvb_region_grow_asm ---- */
 
-/* Locals (below the saved registers). */
+/* Locals (below the saved registers); the first ones are within reach of the 16-bit loads and
+ * stores that ride in parallel slots. */
 #define L_CAP 0
 #define L_TOL 4
 #define L_BBMIN 8		/* (min_y << 16) | min_x */
 #define L_BBMAX 12		/* (max_y << 16) | max_x */
-#define L_DROP 16
-#define L_MBASE 20
-#define L_IBASE 24
-#define L_W1 28			/* width - 1 */
-#define L_H1 32			/* height - 1 */
-#define L_UPK 36		/* -0x10000: y - 1 in a packed (y << 16) | x */
-#define L_DNK 40		/* +0x10000 */
-#define L_SIZE 44
+#define L_MBASE 16
+#define L_IBASE 20
+#define L_ONE 24		/* 1, read through I2 */
+#define L_DROP 28
+#define L_W1 32			/* width - 1 */
+#define L_H1 36			/* height - 1 */
+#define L_K 40			/* 9 words: the packed (y << 16) | x offset of each neighbour */
+#define L_SIZE 76
 /* Arguments: 32 bytes of saved registers, then the locals. */
 #define RG_MSTRIDE (L_SIZE + 44)
 #define RG_WIDTH (L_SIZE + 48)
@@ -192,7 +193,7 @@ _bvb_free_space_asm:
  *   R7 (img_stride << 16) | mask_stride, for the address  R1-R3 scratch
  *   P0 its image byte, P1 its mask byte, P4 mask_stride, P5 img_stride, P2/P3 the row above or
  *   below, FP free queue slots (queue_cap - queued), I0/I1 queue head/tail (circular, B0/L0,
- *   B1/L1), A0/A1 sum_x/sum_y.
+ *   B1/L1), I2 -> the constant 1, A0/A1 sum_x/sum_y.
  * While growing, the mask marks the frame's border pixels: 1 = border, not in the region,
  * 254 = border, in the region (interior: 0 / 255). A neighbour is free when its byte is < 2, it
  * joins as ~byte (0 -> 255, 1 -> 254), and a pixel taken from the queue whose own byte is even
@@ -200,39 +201,42 @@ _bvb_free_space_asm:
  * are turned back into 0 / 255 at the end. */
 
 /* Join: R1 = the neighbour's mask byte, R3 = its intensity, R2 = its (y << 16) | x; \mark is the
- * store of ~R1 to its mask byte. */
+ * store of ~R1 to its mask byte. Count, sum and tol * count stay in registers; the bounding box
+ * (two packed min / max) in memory, its loads and stores riding with the ALU ops; sum_x and sum_y
+ * accumulate in A0 / A1 (x, y < 2^15). */
 .macro JOIN tag, back, mark
 	r1 = ~r1;
 	\mark
-	r4 += 1;
-	r5 = r5 + r3;
-	r1 = [sp + L_TOL];
-	r6 = r6 + r1;
-	r1 = [sp + L_BBMIN];
-	r1 = min (r1, r2) (v);
-	[sp + L_BBMIN] = r1;
-	r1 = [sp + L_BBMAX];
-	r1 = max (r1, r2) (v);
-	[sp + L_BBMAX] = r1;
-	r1 = 1;
+	r5 = r5 + r3 (ns) || r3 = [sp + L_TOL] || r1 = [i2];
+	r6 = r6 + r3 (ns) || r3 = [sp + L_BBMIN];
 	a1 += r2.h * r1.l, a0 += r2.l * r1.l (is);
+	r4 = r4 + r1 (ns) || r1 = [sp + L_BBMAX];
+	r3 = min (r3, r2) (v);
+	r1 = max (r1, r2) (v) || [sp + L_BBMIN] = r3;
 	cc = fp == 0;
 	if cc jump .Ldrop_\tag;
+	[sp + L_BBMAX] = r1;
 	[i1++] = r2;
 	fp += -1;
 	jump \back;
 .Ldrop_\tag:
+	[sp + L_BBMAX] = r1;
 	r1 = [sp + L_DROP];
 	r1 += 1;
 	[sp + L_DROP] = r1;
 	jump \back;
 .endm
 
-/* The tolerance test of a free neighbour, intensity in R3: |I * count - sum| <= tol * count. */
-.macro TOLTEST back
+/* The tolerance test of a free neighbour, intensity in R3: |I * count - sum| <= tol * count.
+ * \mul 1: frames of at most 65535 pixels, count < 2^16: one 16 x 16 unsigned multiply. */
+.macro TOLTEST back, mul
+	.if \mul
+	r2 = r3.l * r4.l (fu);
+	.else
 	r2 = r3;
 	r2 *= r4;
-	r2 = r2 - r5;
+	.endif
+	r2 = r2 - r5 (ns);
 	r2 = abs r2;
 	cc = r2 <= r6;
 	if !cc jump \back;
@@ -283,7 +287,7 @@ _bvb_free_space_asm:
 .endm
 
 /* The out-of-line visit of a free neighbour (P2 is still its row's mask pointer). */
-.macro NBV tag, row, col
+.macro NBV tag, row, col, mul
 .Lv_\tag:
 	.if \row == 0
 	r3 = b[p0 + \col\()] (z);
@@ -297,21 +301,9 @@ _bvb_free_space_asm:
 	p3 = p0 + p5;
 	r3 = b[p3 + \col\()] (z);
 	.endif
-	TOLTEST .Lb_\tag
-	.if \row == 0
-	r2 = r0;
-	.endif
-	.if \row == -1
-	r2 = [sp + L_UPK];
-	r2 = r0 + r2;
-	.endif
-	.if \row == 1
-	r2 = [sp + L_DNK];
-	r2 = r0 + r2;
-	.endif
-	.if \col
-	r2 += \col;
-	.endif
+	TOLTEST .Lb_\tag, \mul
+	r2 = [sp + L_K + 12 * \row + 4 * \col + 16];
+	r2 = r0 + r2 (ns);
 	.if \row == 0
 	JOIN \tag, .Lb_\tag, "b[p1 + \col\()] = r1;"
 	.else
@@ -332,48 +324,48 @@ _bvb_free_space_asm:
 	.endif
 .endm
 
-.macro NEIGHBOURS_V pre, conn
-	NBV \pre\()l, 0, -1
-	NBV \pre\()r, 0, 1
-	NBV \pre\()u, -1, 0
-	NBV \pre\()d, 1, 0
+.macro NEIGHBOURS_V pre, conn, mul
+	NBV \pre\()l, 0, -1, \mul
+	NBV \pre\()r, 0, 1, \mul
+	NBV \pre\()u, -1, 0, \mul
+	NBV \pre\()d, 1, 0, \mul
 	.if \conn == 8
-	NBV \pre\()ul, -1, -1
-	NBV \pre\()ur, -1, 1
-	NBV \pre\()dl, 1, -1
-	NBV \pre\()dr, 1, 1
+	NBV \pre\()ul, -1, -1, \mul
+	NBV \pre\()ur, -1, 1, \mul
+	NBV \pre\()dl, 1, -1, \mul
+	NBV \pre\()dr, 1, 1, \mul
 	.endif
 .endm
 
-/* The loop over the queue, for connectivity \conn. */
-.macro GROW conn
-.Lloop\conn:
-	r0 = [i0++];
-	fp += 1;
-	r3 = r0.h * r7.h, r2 = r0.h * r7.l (is);
+/* The loop over the queue, for connectivity \conn (\mul as in TOLTEST). R0 holds the next
+ * entry on entry. */
+.macro GROW conn, mul
+.Lloop\conn\mul:
+	r3 = r0.h * r7.h, r2 = r0.h * r7.l (is) || p2 = [sp + L_MBASE];
 	r1 = r0.l (z);
-	r2 = r2 + r1 (ns) || p2 = [sp + L_MBASE];
-	r3 = r3 + r1 (ns) || p3 = [sp + L_IBASE];
+	r2 = r2 + r1 (ns) || p3 = [sp + L_IBASE];
+	r3 = r3 + r1 (ns);
 	p1 = r2;
 	p0 = r3;
 	p1 = p1 + p2;
 	p0 = p0 + p3;
+	fp += 1;
 	r1 = b[p1] (z);
 	cc = bittst (r1, 0);
-	if !cc jump .Lto_border\conn;
-	NEIGHBOURS f\conn, \conn, 0
-.Lnext\conn:
-	p2 = [sp + L_CAP];
+	if !cc jump .Lto_border\conn\mul;
+	NEIGHBOURS f\conn\mul, \conn, 0
+.Lnext\conn\mul:
+	mnop || p2 = [sp + L_CAP] || r0 = [i0++];
 	cc = fp < p2;
-	if cc jump .Lloop\conn (bp);
+	if cc jump .Lloop\conn\mul (bp);
 	jump.l .Lrg_done;
-.Lto_border\conn:
-	jump.l .Lborder\conn;
-	NEIGHBOURS_V f\conn, \conn
-.Lborder\conn:
-	NEIGHBOURS e\conn, \conn, 1
-	jump.l .Lnext\conn;
-	NEIGHBOURS_V e\conn, \conn
+.Lto_border\conn\mul:
+	jump.l .Lborder\conn\mul;
+	NEIGHBOURS_V f\conn\mul, \conn, \mul
+.Lborder\conn\mul:
+	NEIGHBOURS e\conn\mul, \conn, 1
+	jump.l .Lnext\conn\mul;
+	NEIGHBOURS_V e\conn\mul, \conn, \mul
 .endm
 
 	.align 4
@@ -398,7 +390,8 @@ _bvb_region_grow_asm:
 	jump.l _bvb_region_grow_c;
 
 .Lrg_asm:
-	sp += -L_SIZE;
+	sp += -40;
+	sp += -(L_SIZE - 40);
 	[sp + L_IBASE] = r0;
 	[sp + L_MBASE] = r2;
 	p5 = r1;			/* img_stride */
@@ -419,11 +412,33 @@ _bvb_region_grow_asm:
 	[sp + L_BBMAX] = r0;
 	r0 = 0;
 	[sp + L_DROP] = r0;
+	/* neighbour offsets, L_K + 12 * (dy + 1) + 4 * (dx + 1): dy * 0x10000 + dx */
 	r0.l = 0;
 	r0.h = 1;
-	[sp + L_DNK] = r0;
-	r0 = -r0;
-	[sp + L_UPK] = r0;
+	r1 = -1;
+	r1 = r1 - r0;
+	[sp + L_K] = r1;
+	r1 += 1;
+	[sp + L_K + 4] = r1;
+	r1 += 1;
+	[sp + L_K + 8] = r1;
+	r1 = -1;
+	[sp + L_K + 12] = r1;
+	r1 = 0;
+	[sp + L_K + 16] = r1;
+	r1 = 1;
+	[sp + L_K + 20] = r1;
+	[sp + L_ONE] = r1;
+	r1 = r0;
+	r1 += -1;
+	[sp + L_K + 24] = r1;
+	r1 += 1;
+	[sp + L_K + 28] = r1;
+	r1 += 1;
+	[sp + L_K + 32] = r1;
+	r1 = sp;
+	r1 += L_ONE;
+	i2 = r1;
 	p2 = [sp + RG_PARAMS];
 	r0 = [p2 + 8];
 	[sp + L_TOL] = r0;
@@ -512,17 +527,34 @@ _bvb_region_grow_asm:
 	p2 = [sp + L_CAP];
 	cc = fp < p2;
 	if !cc jump .Lno_seed;
+	r0 = [sp + RG_WIDTH];
+	r1 = [sp + RG_HEIGHT];
+	r0 *= r1;
+	r1.l = 0;
+	r1.h = 1;
+	cc = r0 < r1;			/* < 2^16 pixels: count fits the 16-bit multiply */
 	p2 = [sp + RG_PARAMS];
-	r0 = [p2 + 12];
-	r1 = 8;
-	cc = r0 == r1;
-	if cc jump .Lgo8;
-	jump.l .Lloop4;
-.Lgo8:
-	jump.l .Lloop8;
+	r1 = [p2 + 12];
+	r0 = [i0++];
+	if !cc jump .Lbig;
+	r2 = 8;
+	cc = r1 == r2;
+	if cc jump .Lgo81;
+	jump.l .Lloop41;
+.Lgo81:
+	jump.l .Lloop81;
+.Lbig:
+	r2 = 8;
+	cc = r1 == r2;
+	if cc jump .Lgo80;
+	jump.l .Lloop40;
+.Lgo80:
+	jump.l .Lloop80;
 
-	GROW 4
-	GROW 8
+	GROW 4, 1
+	GROW 8, 1
+	GROW 4, 0
+	GROW 8, 0
 
 .Lrg_done:
 	/* border bytes back to 0 / 255: -(byte >> 7) */
@@ -590,7 +622,8 @@ _bvb_region_grow_asm:
 	r0 = r4;
 	l0 = 0;
 	l1 = 0;
-	sp += L_SIZE;
+	sp += 40;
+	sp += L_SIZE - 40;
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;
