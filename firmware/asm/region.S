@@ -178,7 +178,8 @@ _bvb_free_space_asm:
 #define L_W1 32			/* width - 1 */
 #define L_H1 36			/* height - 1 */
 #define L_K 40			/* 9 words: the packed (y << 16) | x offset of each neighbour */
-#define L_SIZE 76
+#define L_STRIDES 76		/* (img_stride << 16) | mask_stride, read through I3 */
+#define L_SIZE 80
 /* Arguments: 32 bytes of saved registers, then the locals. */
 #define RG_MSTRIDE (L_SIZE + 44)
 #define RG_WIDTH (L_SIZE + 48)
@@ -190,10 +191,10 @@ _bvb_free_space_asm:
 
 /* Register use in the growing loop:
  *   R0 the pixel taken from the queue, (y << 16) | x      R4 count  R5 sum  R6 tol * count
- *   R7 (img_stride << 16) | mask_stride, for the address  R1-R3 scratch
- *   P0 its image byte, P1 its mask byte, P4 mask_stride, P5 img_stride, P2/P3 the row above or
- *   below, FP free queue slots (queue_cap - queued), I0/I1 queue head/tail (circular, B0/L0,
- *   B1/L1), I2 -> the constant 1, A0/A1 sum_x/sum_y.
+ *   R7 (img_stride << 16) | mask_stride for the address multiply, then scratch  R1-R3 scratch
+ *   P0 its image byte, P1 its mask byte, P4 -mask_stride, P5 -img_stride, P2/P3 the row above
+ *   or below, FP queued entries, I0/I1 queue head/tail (circular, B0/L0, B1/L1), I2 -> the
+ *   constant 1, I3 -> the packed strides, A0/A1 sum_x/sum_y.
  * While growing, the mask marks the frame's border pixels: 1 = border, not in the region,
  * 254 = border, in the region (interior: 0 / 255). A neighbour is free when its byte is < 2, it
  * joins as ~byte (0 -> 255, 1 -> 254), and a pixel taken from the queue whose own byte is even
@@ -204,27 +205,82 @@ _bvb_free_space_asm:
  * store of ~R1 to its mask byte. Count, sum and tol * count stay in registers; the bounding box
  * (two packed min / max) in memory, its loads and stores riding with the ALU ops; sum_x and sum_y
  * accumulate in A0 / A1 (x, y < 2^15). */
-.macro JOIN tag, back, mark
+.macro JOIN tag, back, mark, bb=3
 	r1 = ~r1;
 	\mark
 	r5 = r5 + r3 (ns) || r3 = [sp + L_TOL] || r1 = [i2];
 	r6 = r6 + r3 (ns) || r3 = [sp + L_BBMIN];
-	a1 += r2.h * r1.l, a0 += r2.l * r1.l (is);
+	a1 += r2.h * r1.l, a0 += r2.l * r1.l (is) || p3 = [sp + L_CAP];
 	r4 = r4 + r1 (ns) || r1 = [sp + L_BBMAX];
+	.if \bb & 1
 	r3 = min (r3, r2) (v);
+	.endif
+	.if \bb & 2
 	r1 = max (r1, r2) (v) || [sp + L_BBMIN] = r3;
-	cc = fp == 0;
-	if cc jump .Ldrop_\tag;
 	[sp + L_BBMAX] = r1;
+	.else
+	[sp + L_BBMIN] = r3;
+	.endif
+	cc = fp < p3;
+	if !cc jump .Ldrop_\tag;
 	[i1++] = r2;
-	fp += -1;
+	fp += 1;
 	jump \back;
 .Ldrop_\tag:
-	[sp + L_BBMAX] = r1;
 	r1 = [sp + L_DROP];
 	r1 += 1;
 	[sp + L_DROP] = r1;
 	jump \back;
+.endm
+
+/* The up neighbour of a pixel whose left, right and down neighbours are in the region already
+ * (growing upwards, the common case by far): tested and joined in line. P2 = its mask byte. */
+.macro UP_INLINE tag, mul
+	r1 = b[p2] (z);
+	cc = r1 < 2;
+	if !cc jump .Lb_\tag;
+	p3 = p0 + p5;
+	r3 = b[p3] (z);
+	.if \mul
+	r2 = r3.l * r4.l (fu) || p3 = [sp + L_CAP];
+	.else
+	r2 = r3;
+	r2 *= r4;
+	p3 = [sp + L_CAP];
+	.endif
+	r2 = r2 - r5 (ns) || r7 = [sp + L_K + 4];
+	r2 = abs r2;
+	cc = r2 <= r6;
+	if !cc jump .Lb_\tag;
+	cc = fp < p3;
+	if !cc jump .Lud_\tag;
+	r2 = r0 + r7 (ns);
+	r1 = ~r1;
+	b[p2] = r1;
+	r5 = r5 + r3 (ns) || r3 = [sp + L_BBMIN] || r1 = [i2];
+	r3 = min (r3, r2) (v) || [i1++] = r2;
+	a1 += r2.h * r1.l, a0 += r2.l * r1.l (is) || [sp + L_BBMIN] = r3;
+	r4 = r4 + r1 (ns) || r3 = [sp + L_TOL];
+	r6 = r6 + r3 (ns);
+	fp += 1;
+.Lb_\tag:
+.endm
+
+/* UP_INLINE's join with the queue full: counted, not queued. */
+.macro UP_DROP tag
+.Lud_\tag:
+	r2 = r0 + r7 (ns);
+	r1 = ~r1;
+	b[p2] = r1;
+	r5 = r5 + r3 (ns) || r3 = [sp + L_BBMIN] || r1 = [i2];
+	r3 = min (r3, r2) (v);
+	a1 += r2.h * r1.l, a0 += r2.l * r1.l (is) || [sp + L_BBMIN] = r3;
+	r4 = r4 + r1 (ns) || r3 = [sp + L_TOL];
+	r6 = r6 + r3 (ns);
+	r1 = [sp + L_DROP];
+	r1 += 1;
+	[sp + L_DROP] = r1;
+	jump .Lb_\tag;
 .endm
 
 /* The tolerance test of a free neighbour, intensity in R3: |I * count - sum| <= tol * count.
@@ -273,12 +329,12 @@ _bvb_free_space_asm:
 	r1 = b[p1 + \col\()] (z);
 	.endif
 	.if \row == -1
-	p2 = p1;
-	p2 -= p4;
+	p2 = p1 + p4;
 	r1 = b[p2 + \col\()] (z);
 	.endif
 	.if \row == 1
-	p2 = p1 + p4;
+	p2 = p1;
+	p2 -= p4;
 	r1 = b[p2 + \col\()] (z);
 	.endif
 	cc = r1 < 2;
@@ -293,21 +349,30 @@ _bvb_free_space_asm:
 	r3 = b[p0 + \col\()] (z);
 	.endif
 	.if \row == -1
-	p3 = p0;
-	p3 -= p5;
+	p3 = p0 + p5;
 	r3 = b[p3 + \col\()] (z);
 	.endif
 	.if \row == 1
-	p3 = p0 + p5;
+	p3 = p0;
+	p3 -= p5;
 	r3 = b[p3 + \col\()] (z);
 	.endif
 	TOLTEST .Lb_\tag, \mul
 	r2 = [sp + L_K + 12 * \row + 4 * \col + 16];
 	r2 = r0 + r2 (ns);
+	/* a join can only lower the box's minimum where it steps left or up, raise its maximum
+	 * where it steps right or down */
+	.set bb_\tag, 3
+	.if \row + \col < 0
+	.set bb_\tag, 1
+	.endif
+	.if \row + \col > 0
+	.set bb_\tag, 2
+	.endif
 	.if \row == 0
-	JOIN \tag, .Lb_\tag, "b[p1 + \col\()] = r1;"
+	JOIN \tag, .Lb_\tag, "b[p1 + \col\()] = r1;", bb_\tag
 	.else
-	JOIN \tag, .Lb_\tag, "b[p2 + \col\()] = r1;"
+	JOIN \tag, .Lb_\tag, "b[p2 + \col\()] = r1;", bb_\tag
 	.endif
 .endm
 
@@ -338,7 +403,7 @@ _bvb_free_space_asm:
 .endm
 
 /* The loop over the queue, for connectivity \conn (\mul as in TOLTEST). R0 holds the next
- * entry on entry. */
+ * entry and R7 the packed strides on entry. */
 .macro GROW conn, mul
 .Lloop\conn\mul:
 	r3 = r0.h * r7.h, r2 = r0.h * r7.l (is) || p2 = [sp + L_MBASE];
@@ -349,18 +414,44 @@ _bvb_free_space_asm:
 	p0 = r3;
 	p1 = p1 + p2;
 	p0 = p0 + p3;
-	fp += 1;
+	fp += -1;
 	r1 = b[p1] (z);
 	cc = bittst (r1, 0);
 	if !cc jump .Lto_border\conn\mul;
-	NEIGHBOURS f\conn\mul, \conn, 0
+	/* left, right and down all in the region: only the up neighbour can join */
+	r1 = b[p1 + -1] (z);
+	r2 = b[p1 + 1] (z);
+	p2 = p1;
+	p2 -= p4;
+	r1 = min (r1, r2) (v) || r2 = b[p2] (z);
+	r1 = min (r1, r2) (v);
+	cc = bittst (r1, 7);
+	if !cc jump .Lgeneral\conn\mul;
+	p2 = p1 + p4;
+	UP_INLINE u\conn\mul, \mul
+	.if \conn == 8
+	NB uul\conn\mul, -1, -1, 0
+	NB uur\conn\mul, -1, 1, 0
+	NB udl\conn\mul, 1, -1, 0
+	NB udr\conn\mul, 1, 1, 0
+	.endif
 .Lnext\conn\mul:
-	mnop || p2 = [sp + L_CAP] || r0 = [i0++];
-	cc = fp < p2;
-	if cc jump .Lloop\conn\mul (bp);
+	mnop || r7 = [i3] || r0 = [i0++];
+	cc = fp == 0;
+	if !cc jump .Lloop\conn\mul (bp);
 	jump.l .Lrg_done;
 .Lto_border\conn\mul:
 	jump.l .Lborder\conn\mul;
+	UP_DROP u\conn\mul
+	.if \conn == 8
+	NBV uul\conn\mul, -1, -1, \mul
+	NBV uur\conn\mul, -1, 1, \mul
+	NBV udl\conn\mul, 1, -1, \mul
+	NBV udr\conn\mul, 1, 1, \mul
+	.endif
+.Lgeneral\conn\mul:
+	NEIGHBOURS f\conn\mul, \conn, 0
+	jump.l .Lnext\conn\mul;
 	NEIGHBOURS_V f\conn\mul, \conn, \mul
 .Lborder\conn\mul:
 	NEIGHBOURS e\conn\mul, \conn, 1
@@ -394,10 +485,13 @@ _bvb_region_grow_asm:
 	sp += -(L_SIZE - 40);
 	[sp + L_IBASE] = r0;
 	[sp + L_MBASE] = r2;
-	p5 = r1;			/* img_stride */
 	r3 = [sp + RG_MSTRIDE];
-	p4 = r3;
 	r7 = pack (r1.l, r3.l);
+	[sp + L_STRIDES] = r7;
+	r0 = -r1;
+	p5 = r0;			/* -img_stride */
+	r0 = -r3;
+	p4 = r0;			/* -mask_stride */
 	r4 = [sp + RG_WIDTH];
 	r5 = [sp + RG_HEIGHT];
 	r0 = r4;
@@ -439,6 +533,10 @@ _bvb_region_grow_asm:
 	r1 = sp;
 	r1 += L_ONE;
 	i2 = r1;
+	r1 = sp;
+	r1 += 40;
+	r1 += L_STRIDES - 40;
+	i3 = r1;
 	p2 = [sp + RG_PARAMS];
 	r0 = [p2 + 8];
 	[sp + L_TOL] = r0;
@@ -454,7 +552,7 @@ _bvb_region_grow_asm:
 	lsetup (.Lclr, .Lclr) lc0 = p1;
 .Lclr:	b[p2++] = r0;
 .Lclr_row_end:
-	p0 = p0 + p4;
+	p0 -= p4;
 	r0 = 1;
 	p0 = r2;			/* top row */
 	lsetup (.Lbtop, .Lbtop) lc0 = p1;
@@ -473,15 +571,15 @@ _bvb_region_grow_asm:
 .Lbside:
 	b[p0] = r0;
 	b[p2] = r0;
-	p0 = p0 + p4;
+	p0 -= p4;
 .Lbside_end:
-	p2 = p2 + p4;
+	p2 -= p4;
 
 	/* queue: I0 head, I1 tail, circular over queue_cap entries */
 	r0 = [sp + RG_QUEUE];
 	r1 = [sp + RG_QCAP];
 	[sp + L_CAP] = r1;
-	fp = r1;			/* free slots */
+	fp = 0;				/* queued */
 	b0 = r0;
 	i0 = r0;
 	b1 = r0;
@@ -524,9 +622,8 @@ _bvb_region_grow_asm:
 	r2 = r0;
 	JOIN seed, .Lseeded, "b[p2] = r1;"
 .Lseeded:
-	p2 = [sp + L_CAP];
-	cc = fp < p2;
-	if !cc jump .Lno_seed;
+	cc = fp == 0;
+	if cc jump .Lno_seed;
 	r0 = [sp + RG_WIDTH];
 	r1 = [sp + RG_HEIGHT];
 	r0 *= r1;
@@ -573,6 +670,7 @@ _bvb_region_grow_asm:
 	r1 = r3;
 	r1 += -1;
 	r2 = p4;
+	r2 = -r2;
 	r1 *= r2;
 	r2 = p0;
 	r1 = r1 + r2;
@@ -595,9 +693,9 @@ _bvb_region_grow_asm:
 	r0 >>= 7;
 	r0 = -r0;
 	b[p2] = r0;
-	p0 = p0 + p4;
+	p0 -= p4;
 .Lfside_end:
-	p2 = p2 + p4;
+	p2 -= p4;
 
 	/* stats */
 	p0 = [sp + RG_STATS];
