@@ -234,26 +234,23 @@ _bvb_free_space_asm:
 .endm
 
 /* The up neighbour of a pixel whose left, right and down neighbours are in the region already
- * (growing upwards, the common case by far): tested and joined in line. P2 = its mask byte. */
+ * (growing upwards, the common case by far): tested and joined in line. P2 = its mask byte, R3
+ * its intensity. Taking the pixel from the queue freed a slot and this is the first join since,
+ * so the queue has room. */
 .macro UP_INLINE tag, mul
-	r1 = b[p2] (z);
-	cc = r1 < 2;
-	if !cc jump .Lb_\tag;
-	p3 = p0 + p5;
-	r3 = b[p3] (z);
 	.if \mul
-	r2 = r3.l * r4.l (fu) || p3 = [sp + L_CAP];
+	r2 = r3.l * r4.l (fu) || r1 = b[p2] (z);
 	.else
+	r1 = b[p2] (z);
 	r2 = r3;
 	r2 *= r4;
-	p3 = [sp + L_CAP];
 	.endif
 	r2 = r2 - r5 (ns) || r7 = [sp + L_K + 4];
 	r2 = abs r2;
+	cc = r1 < 2;
+	if !cc jump .Lb_\tag;
 	cc = r2 <= r6;
 	if !cc jump .Lb_\tag;
-	cc = fp < p3;
-	if !cc jump .Lud_\tag;
 	r2 = r0 + r7 (ns);
 	r1 = ~r1;
 	b[p2] = r1;
@@ -264,23 +261,6 @@ _bvb_free_space_asm:
 	r6 = r6 + r3 (ns);
 	fp += 1;
 .Lb_\tag:
-.endm
-
-/* UP_INLINE's join with the queue full: counted, not queued. */
-.macro UP_DROP tag
-.Lud_\tag:
-	r2 = r0 + r7 (ns);
-	r1 = ~r1;
-	b[p2] = r1;
-	r5 = r5 + r3 (ns) || r3 = [sp + L_BBMIN] || r1 = [i2];
-	r3 = min (r3, r2) (v);
-	a1 += r2.h * r1.l, a0 += r2.l * r1.l (is) || [sp + L_BBMIN] = r3;
-	r4 = r4 + r1 (ns) || r3 = [sp + L_TOL];
-	r6 = r6 + r3 (ns);
-	r1 = [sp + L_DROP];
-	r1 += 1;
-	[sp + L_DROP] = r1;
-	jump .Lb_\tag;
 .endm
 
 /* The tolerance test of a free neighbour, intensity in R3: |I * count - sum| <= tol * count.
@@ -403,8 +383,11 @@ _bvb_free_space_asm:
 .endm
 
 /* The loop over the queue, for connectivity \conn (\mul as in TOLTEST). R0 holds the next
- * entry and R7 the packed strides on entry. */
+ * entry, R7 the packed strides and P2 width * height + 1 on entry. */
 .macro GROW conn, mul
+.Lstart\conn\mul:
+	/* a hardware loop: at most width * height pixels are ever taken from the queue (P2) */
+	lsetup (.Lloop\conn\mul, .Lloop_end\conn\mul) lc0 = p2;
 .Lloop\conn\mul:
 	r3 = r0.h * r7.h, r2 = r0.h * r7.l (is) || p2 = [sp + L_MBASE];
 	r1 = r0.l (z);
@@ -419,15 +402,16 @@ _bvb_free_space_asm:
 	cc = bittst (r1, 0);
 	if !cc jump .Lto_border\conn\mul;
 	/* left, right and down all in the region: only the up neighbour can join */
+	p3 = p1;
+	p3 -= p4;
 	r1 = b[p1 + -1] (z);
 	r2 = b[p1 + 1] (z);
-	p2 = p1;
-	p2 -= p4;
-	r1 = min (r1, r2) (v) || r2 = b[p2] (z);
-	r1 = min (r1, r2) (v);
+	p2 = p1 + p4;
+	r1 = min (r1, r2) (v) || r2 = b[p3] (z);
+	p3 = p0 + p5;
+	r1 = min (r1, r2) (v) || r3 = b[p3] (z);
 	cc = bittst (r1, 7);
 	if !cc jump .Lgeneral\conn\mul;
-	p2 = p1 + p4;
 	UP_INLINE u\conn\mul, \mul
 	.if \conn == 8
 	NB uul\conn\mul, -1, -1, 0
@@ -436,13 +420,14 @@ _bvb_free_space_asm:
 	NB udr\conn\mul, 1, 1, 0
 	.endif
 .Lnext\conn\mul:
-	mnop || r7 = [i3] || r0 = [i0++];
 	cc = fp == 0;
-	if !cc jump .Lloop\conn\mul (bp);
+	if cc jump .Lexit\conn\mul;
+.Lloop_end\conn\mul:
+	mnop || r7 = [i3] || r0 = [i0++];
+.Lexit\conn\mul:
 	jump.l .Lrg_done;
 .Lto_border\conn\mul:
 	jump.l .Lborder\conn\mul;
-	UP_DROP u\conn\mul
 	.if \conn == 8
 	NBV uul\conn\mul, -1, -1, \mul
 	NBV uur\conn\mul, -1, 1, \mul
@@ -630,23 +615,25 @@ _bvb_region_grow_asm:
 	r1.l = 0;
 	r1.h = 1;
 	cc = r0 < r1;			/* < 2^16 pixels: count fits the 16-bit multiply */
+	r0 += 1;
 	p2 = [sp + RG_PARAMS];
 	r1 = [p2 + 12];
+	p2 = r0;
 	r0 = [i0++];
 	if !cc jump .Lbig;
 	r2 = 8;
 	cc = r1 == r2;
 	if cc jump .Lgo81;
-	jump.l .Lloop41;
+	jump.l .Lstart41;
 .Lgo81:
-	jump.l .Lloop81;
+	jump.l .Lstart81;
 .Lbig:
 	r2 = 8;
 	cc = r1 == r2;
 	if cc jump .Lgo80;
-	jump.l .Lloop40;
+	jump.l .Lstart40;
 .Lgo80:
-	jump.l .Lloop80;
+	jump.l .Lstart80;
 
 	GROW 4, 1
 	GROW 8, 1
@@ -654,6 +641,8 @@ _bvb_region_grow_asm:
 	GROW 8, 0
 
 .Lrg_done:
+	r0 = 0;
+	lc0 = r0;
 	/* border bytes back to 0 / 255: -(byte >> 7) */
 	p0 = [sp + L_MBASE];
 	r0 = [sp + RG_WIDTH];
