@@ -531,13 +531,39 @@ _bvb_region_grow_asm:
 	p1 = r4;			/* width */
 	p3 = r5;			/* height */
 	r0 = 0;
+	/* each row: bytes up to a word boundary, words, the last bytes */
 	lsetup (.Lclr_row, .Lclr_row_end) lc1 = p3;
 .Lclr_row:
 	p2 = p0;
-	lsetup (.Lclr, .Lclr) lc0 = p1;
-.Lclr:	b[p2++] = r0;
+	r1 = p0;
+	r1 = -r1;
+	r6 = 3;
+	r1 = r1 & r6;
+	r1 = min (r1, r4);
+	r6 = r4 - r1;
+	p1 = r1;
+	cc = r1 == 0;
+	if cc jump .Lclr_words;
+	lsetup (.Lclr_h, .Lclr_h) lc0 = p1;
+.Lclr_h: b[p2++] = r0;
+.Lclr_words:
+	r1 = r6 >> 2;
+	p1 = r1;
+	cc = r1 == 0;
+	if cc jump .Lclr_tail;
+	lsetup (.Lclr_w, .Lclr_w) lc0 = p1;
+.Lclr_w: [p2++] = r0;
+.Lclr_tail:
+	r1 = 3;
+	r6 = r6 & r1;
+	p1 = r6;
+	cc = r6 == 0;
+	if cc jump .Lclr_row_end;
+	lsetup (.Lclr_t, .Lclr_t) lc0 = p1;
+.Lclr_t: b[p2++] = r0;
 .Lclr_row_end:
 	p0 -= p4;
+	p1 = r4;			/* width */
 	r0 = 1;
 	p0 = r2;			/* top row */
 	lsetup (.Lbtop, .Lbtop) lc0 = p1;
