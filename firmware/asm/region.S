@@ -43,55 +43,76 @@ _bvb_free_space_asm:
 	lsetup (.Lfs_init, .Lfs_init) lc0 = p2;
 .Lfs_init:
 	w[p0++] = r1;
+	b1 = r1;			/* height - 1 */
 	/* bottom row: mask + (height - 1) * stride */
 	r1 *= r6;
 	r0 = r0 + r1;
-	p3 = r0;
+	i3 = r0;			/* the strip's bottom-left pixel */
+	i2 = p4;			/* rows */
+	b2 = r2;			/* width */
+	b3 = r2;			/* columns left for the strips */
+	/* strips of 64 columns in frames wider than 320, else one strip: the per-row set-up of
+	 * narrow strips costs more than the rows they skip in small frames */
+	r1 = 320;
+	cc = r1 < r2;
+	r1 = 64;
+	if !cc r1 = r2;
+	m3 = r1;
 	/* G = min(min_gap - 1, 32767) */
 	r5 += -1;
 	r1 = 32767 (x);
 	r5 = min (r5, r1);
+	r5 = pack (r5.l, r5.l);
 	m0 = r5;
-	/* pairs - 1 in m2, the odd column flag in m1 */
-	r0 = 1;
-	r1 = r2 & r0;
-	m1 = r1;
-	r2 >>= 1;
-	m3 = r2;			/* pairs */
-	r2 += -1;
-	m2 = r2;
+	r0.l = 1;
+	r0.h = 1;
+	b0 = r0;
 	r7.l = 0x7fff;
 	r7.h = 0x7fff;
 	r4.l = 0x8000;
 	r4.h = 0x8000;
 
-.Lfs_row:
-	/* per-row constants: y - 1 and the threshold minus one, in both lanes */
-	r0 = p1;
-	r1 = r0;
+	/* Strips of columns, each walked up only until its own columns are all decided. */
+.Lfs_strip:
+	r0 = b3;
+	r1 = m3;
+	r1 = min (r0, r1);
+	r0 = r0 - r1;
+	b3 = r0;
+	/* pairs - 1 in m2 (-1: none), the odd column flag in m1 */
+	r0 = 1;
+	r0 = r1 & r0;
+	m1 = r0;
+	r1 >>= 1;
 	r1 += -1;
-	r6 = pack (r1.l, r1.l);
-	r2 = m0;
-	r2 = r2 + r1;
-	r1 = 32767 (x);
-	r2 = min (r2, r1);
-	cc = r0 == 0;
-	r1 = -1;
-	if cc r2 = r1;
-	r5 = pack (r2.l, r2.l);
+	m2 = r1;
+	p3 = i3;
+	p1 = b1;			/* y */
+	r0 = b1;
+	r6 = pack (r0.l, r0.l);
+	r0 += 1;
+	p2 = r0;
+	lsetup (.Lfs_row, .Lfs_row_end) lc1 = p2;
+.Lfs_row:
+	/* per-row constants, both lanes: y - 1, and the threshold minus one, y - 1 + G saturated
+	 * (row 0: y - 1 = -1, any zero decides) */
+	r1 = b0;
+	r6 = r6 -|- r1;
+	r1 = m0;
+	r5 = r6 +|+ r1 (s);
+	cc = p1 == 0;
+	if cc r5 = r6;
 	r3 = r4;
 	i0 = p4;
 	i1 = p4;
 	p0 = p3;
-	r0 = m3;
-	cc = r0 == 0;
+	p2 = m2;
+	cc = p2 < 0;
 	if cc jump .Lfs_odd;
 	/* first pair's loads; the loop loads one pair ahead */
-	r1 = b[p0++] (z);
+	mnop || r1 = b[p0++] (z) || r2.l = w[i0++];
 	r0 = b[p0++] (z);
-	r2.l = w[i0++];
 	r0 = pack (r0.l, r1.l);
-	p2 = m2;
 	cc = p2 == 0;
 	if cc jump .Lfs_last;
 	lsetup (.Lfs_pair, .Lfs_pair_end) lc0 = p2;
@@ -119,7 +140,7 @@ _bvb_free_space_asm:
 .Lfs_odd:
 	r0 = m1;
 	cc = r0 == 0;
-	if cc jump .Lfs_row_end;
+	if cc jump .Lfs_row_tail;
 	r0 = b[p0] (z);
 	r2.l = w[i0];
 	r2.h = w[i0];
@@ -132,25 +153,33 @@ _bvb_free_space_asm:
 	r0 = r0 & r4;
 	r2 = r2 ^ r0;
 	r3 = max (r3, r2) (v) || w[i1] = r2.l;
-.Lfs_row_end:
-	/* every column decided (both lanes of the running max negative): stop early */
+.Lfs_row_tail:
+	/* every column of the strip decided (both lanes of the running max negative): stop */
 	r0 = r3 & r4;
 	cc = r0 == r4;
-	if cc jump .Lfs_decode;
+	if cc jump .Lfs_strip_end;
 	p3 -= p5;
+.Lfs_row_end:
 	p1 += -1;
-	cc = p1 < 0;
-	if !cc jump .Lfs_row (bp);
+.Lfs_strip_end:
+	r0 = i3;
+	r0 += 32;
+	r0 += 32;
+	i3 = r0;
+	p4 += 32;
+	p4 += 32;
+	p4 += 32;
+	p4 += 32;
+	r0 = b3;
+	cc = r0 == 0;
+	if !cc jump .Lfs_strip;
+	lc1 = r0;
 
 .Lfs_decode:
 	r2.l = 0x8000;
 	r2.h = 0xffff;
-	p0 = p4;
-	r0 = m3;
-	r1 = m1;
-	r0 = r0 << 1;
-	r0 = r0 + r1;
-	p2 = r0;
+	p0 = i2;
+	p2 = b2;
 	lsetup (.Lfs_dec, .Lfs_dec_end) lc0 = p2;
 .Lfs_dec:
 	r0 = w[p0] (x);
