@@ -1,5 +1,40 @@
 /* Seeded region growing and per-column free space (bvb/region.h).
- * (header completed below once measured) */
+ *
+ * Measured (bfbench bench: the robot's view of the boxes arena, pose 0; region_grow seeded at
+ * the bottom middle, tol 20, 4-connected, queue_cap = width * height; free_space on that floor
+ * mask, min_gap 3). "Per grown pixel" divides by the region's pixel count (11,371 at 160x120,
+ * 44,672 at 320x240, 175,695 at 640x480); each is taken from the queue once.
+ *
+ *   region_grow   C cycles      asm cycles   speed-up  per grown pixel C / asm   per frame pixel
+ *   160x120        2,277,208      579,015      3.9x         200.3 / 50.9            30.2
+ *   320x240        8,951,463    2,440,575      3.7x         200.4 / 54.6            31.8
+ *   640x480       35,162,669    9,439,275      3.7x         200.1 / 53.7            30.7
+ *   Lower bound: 20 cycles per grown pixel (four neighbour byte tests, compare + branch each;
+ *   the tolerance test, multiply / subtract / abs / compare / branch; the count, sum,
+ *   tol * count, bounding-box and sum_x/sum_y updates; queue bookkeeping and the loop branch;
+ *   every load and store in a parallel slot, no branch penalty). The common case here costs 41
+ *   issues (12 to take the pixel from the queue and find its image and mask bytes, 10 to test
+ *   left, right and down at once, 16 for the up neighbour's test and join, 3 for the loop);
+ *   the rest is the other cases (about one pixel in eight has a free left, right or down
+ *   neighbour; border pixels; rejected neighbours) and clearing the mask.
+ *
+ *   free_space    C cycles      asm cycles   speed-up  per pixel C / asm
+ *   160x120          143,720       62,218      2.3x         7.49 / 3.24
+ *   320x240          437,932      238,023      1.8x         5.70 / 3.10
+ *   640x480        1,479,060      600,265      2.5x         4.81 / 1.95
+ *   Lower bound of the method: 9 single-issue ALU ops per two pixels (4.5 per pixel) over the
+ *   rows it must scan; measured 1.07, 1.03 and 1.13 times that bound. The C walks each column
+ *   only up to its boundary, the assembly walks whole rows (contiguous loads, two columns per
+ *   op) and stops when every column (of a 64-column strip, in frames wider than 320) is decided.
+ *
+ * In the segmentation obstacle avoidance pipeline (seg_avoid, 160x120 scenes) the two kernels
+ * take the frame from 2.31-2.66M cycles on average (max 2.78M) to 0.62-0.68M (max 0.70M).
+ *
+ * Working set: region_grow touches the image, the mask and the queue (4 bytes per queued pixel,
+ * up to 4 * width * height; a FIFO, so in practice a band about as long as the growing front)
+ * in whatever memory the caller gives; its state lives in registers and 80 bytes of stack.
+ * free_space reads the mask once per scanned row and keeps its state in rows[] (L1 on hardware
+ * for the per-row re-reads). */
 
 	.section .l1.text, "ax"
 
