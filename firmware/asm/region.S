@@ -6,9 +6,9 @@
  * 44,672 at 320x240, 175,695 at 640x480); each is taken from the queue once.
  *
  *   region_grow   C cycles      asm cycles   speed-up  per grown pixel C / asm   per frame pixel
- *   160x120        2,277,208      579,015      3.9x         200.3 / 50.9            30.2
- *   320x240        8,951,463    2,440,575      3.7x         200.4 / 54.6            31.8
- *   640x480       35,162,669    9,439,275      3.7x         200.1 / 53.7            30.7
+ *   160x120        2,277,208      579,018      3.9x         200.3 / 50.9            30.2
+ *   320x240        8,951,463    2,440,578      3.7x         200.4 / 54.6            31.8
+ *   640x480       35,162,669    9,439,278      3.7x         200.1 / 53.7            30.7
  *   Lower bound: 20 cycles per grown pixel (four neighbour byte tests, compare + branch each;
  *   the tolerance test, multiply / subtract / abs / compare / branch; the count, sum,
  *   tol * count, bounding-box and sum_x/sum_y updates; queue bookkeeping and the loop branch;
@@ -19,9 +19,9 @@
  *   neighbour; border pixels; rejected neighbours) and clearing the mask.
  *
  *   free_space    C cycles      asm cycles   speed-up  per pixel C / asm
- *   160x120          143,720       62,218      2.3x         7.49 / 3.24
- *   320x240          437,932      238,023      1.8x         5.70 / 3.10
- *   640x480        1,479,060      600,265      2.5x         4.81 / 1.95
+ *   160x120          143,720       62,224      2.3x         7.49 / 3.24
+ *   320x240          437,932      238,029      1.8x         5.70 / 3.10
+ *   640x480        1,479,060      600,271      2.5x         4.81 / 1.95
  *   Lower bound of the method: 9 single-issue ALU ops per two pixels (4.5 per pixel) over the
  *   rows it must scan; measured 1.07, 1.03 and 1.13 times that bound. The C walks each column
  *   only up to its boundary, the assembly walks whole rows (contiguous loads, two columns per
@@ -66,20 +66,26 @@
 	.type _bvb_free_space_asm, STT_FUNC
 _bvb_free_space_asm:
 	[--sp] = (r7:4, p5:3);
+	cc = r2 <= 0;
+	if cc jump .Lfs_ret;
 	p5 = r1;			/* mask stride */
 	r3 = [sp + FS_HEIGHT];
 	p4 = [sp + FS_ROWS];
 	r5 = [sp + FS_MINGAP];
-	/* open every column: S = height - 1 */
+	/* open every column: S = height - 1 (no rows: -1, the answer) */
 	r6 = r1;
 	r1 = r3;
 	r1 += -1;
+	cc = r3 <= 0;
+	r7 = -1;
+	if cc r1 = r7;
 	p1 = r1;			/* y, from the bottom row */
 	p0 = p4;
 	p2 = r2;
 	lsetup (.Lfs_init, .Lfs_init) lc0 = p2;
 .Lfs_init:
 	w[p0++] = r1;
+	if cc jump .Lfs_ret;
 	b1 = r1;			/* height - 1 */
 	/* bottom row: mask + (height - 1) * stride */
 	r1 *= r6;
@@ -225,6 +231,7 @@ _bvb_free_space_asm:
 	if !cc r0 = r1;
 .Lfs_dec_end:
 	w[p0++] = r0;
+.Lfs_ret:
 	(r7:4, p5:3) = [sp++];
 	rts;
 	.size _bvb_free_space_asm, . - _bvb_free_space_asm
@@ -516,17 +523,22 @@ _bvb_free_space_asm:
 _bvb_region_grow_asm:
 	[--sp] = (r7:4, p5:3);
 	[--sp] = fp;
-	/* The 16-bit address multiplies need strides and sizes below 2^15; larger (1-pixel-high or
-	 * -wide) frames go to the C reference. */
+	/* The 16-bit address multiplies need strides and sizes in 0 .. 2^15 - 1: anything else
+	 * (1-pixel-high or -wide frames beyond that, negative strides) and empty frames go to the
+	 * C reference. */
 	r3 = [sp + 44];
-	r3 = max (r3, r1);
+	r3 = r3 | r1;
 	r4 = [sp + 48];
-	r3 = max (r3, r4);
-	r4 = [sp + 52];
-	r3 = max (r3, r4);
-	r4 = 32767 (x);
-	cc = r4 < r3 (iu);
-	if !cc jump .Lrg_asm;
+	r3 = r3 | r4;
+	r5 = [sp + 52];
+	r3 = r3 | r5;
+	r3 >>= 15;
+	r4 = min (r4, r5);
+	cc = r4 == 0;
+	if cc jump .Lrg_to_c;
+	cc = r3 == 0;
+	if cc jump .Lrg_asm;
+.Lrg_to_c:
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
 	jump.l _bvb_region_grow_c;
