@@ -5,9 +5,9 @@
 #include "bvb/pipeline.h"
 
 static const struct bvb_seg_avoid_kernels seg_asm = {
-    bvb_region_grow_c, /* no assembly yet */
+    bvb_region_grow_asm,
     bvb_erode3x3_u8_asm,
-    bvb_free_space_c, /* no assembly yet */
+    bvb_free_space_asm,
 };
 
 int32_t bvb_pipe_seg_avoid_asm(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,

@@ -91,10 +91,12 @@ void check_grow(Checker &ck) {
       const Image &grey = robot_view(s.w, s.h, pose).grey;
       bvb_region_params prm{s.w / 2, s.h - 1, kTol, pose & 1 ? 8 : 4};
       const int cap = pose == 2 ? 2 * (s.w + s.h) : s.w * s.h;
-      ck.add(grow_call(grey.data, s.w, s.h, s.w, s.w, prm, cap,
-                       std::to_string(s.w) + "x" + std::to_string(s.h) + " robot view " +
-                           std::to_string(pose) + " conn " + std::to_string(prm.connectivity) + " queue " +
-                           std::to_string(cap)));
+      CheckCall c = grow_call(grey.data, s.w, s.h, s.w, s.w, prm, cap,
+                              std::to_string(s.w) + "x" + std::to_string(s.h) + " robot view " +
+                                  std::to_string(pose) + " conn " + std::to_string(prm.connectivity) +
+                                  " queue " + std::to_string(cap));
+      place_buffers(ck, c, rng);
+      ck.add(std::move(c));
     }
   }
 }
@@ -152,9 +154,11 @@ void check_free(Checker &ck) {
   for (int pose = 0; pose < 4; ++pose) {
     const Image &grey = robot_view(160, 120, pose).grey;
     for (int min_gap : {1, 3}) {
-      ck.add(free_call(floor_mask(grey, kTol, 4), 160, 120, 160, min_gap,
-                       "160x120 floor of robot view " + std::to_string(pose) + " min_gap " +
-                           std::to_string(min_gap)));
+      CheckCall c = free_call(floor_mask(grey, kTol, 4), 160, 120, 160, min_gap,
+                              "160x120 floor of robot view " + std::to_string(pose) + " min_gap " +
+                                  std::to_string(min_gap));
+      place_buffers(ck, c, rng);
+      ck.add(std::move(c));
     }
   }
 }
@@ -170,6 +174,47 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &) {
   if (kernel == "free_space") return free_call(floor_mask(grey, kTol, 4), w, h, w, 3, name);
   bvb_region_params prm{w / 2, h - 1, kTol, 4};
   return grow_call(grey.data, w, h, w, w, prm, w * h, name);
+}
+
+// Lower bounds of the bench calls, from what the bench frame makes the kernels do.
+// region_grow: per grown pixel (each is taken from the queue once) at least 20 issues: four
+// neighbour byte tests (compare + branch each), the tolerance test (multiply, subtract, abs,
+// compare, branch), count / sum / tol * count / bounding box / sum_x,sum_y updates, the queue
+// bookkeeping and the loop branch, with every load and store in a parallel slot and no branch
+// penalties counted.
+// free_space: the assembly's method, 9 single-issue ALU ops per two pixels (4.5 per pixel), over
+// the rows it must scan: in each strip of columns (64 wide in frames wider than 320, else the
+// whole row) from the bottom up to the row where the strip's last column is decided.
+double lower_bound(const std::string &kernel, int w, int h) {
+  const Image &grey = robot_view(w, h, 0).grey;
+  if (kernel == "free_space") {
+    const std::vector<uint8_t> mask = floor_mask(grey, kTol, 4);
+    const int min_gap = 3, strip = w > 320 ? 64 : w;
+    double ops = 0;
+    for (int x0 = 0; x0 < w; x0 += strip) {
+      const int x1 = std::min(w, x0 + strip);
+      int top = h;  // lowest row index scanned in this strip
+      for (int x = x0; x < x1; ++x) {
+        int gap = 0, y = h - 1;
+        for (; y >= 0; --y) {
+          if (mask[size_t(y) * w + x]) {
+            gap = 0;
+            continue;
+          }
+          if (++gap >= min_gap || y == 0) break;
+        }
+        top = std::min(top, std::max(y, 0));
+      }
+      ops += 4.5 * (x1 - x0) * (h - top);
+    }
+    return ops;
+  }
+  std::vector<uint8_t> mask(size_t(w) * h);
+  std::vector<int32_t> q(size_t(w) * h);
+  bvb_region_params prm{w / 2, h - 1, kTol, 4};
+  bvb_region_stats st;
+  bvb_region_grow_c(grey.data.data(), w, mask.data(), w, w, h, &prm, q.data(), w * h, &st);
+  return 20.0 * st.count;
 }
 
 // width * height * max(width, height) < 2^31: the kernel's sums stay in an int32.
@@ -233,7 +278,7 @@ RunPlan plan_free(RunRequest &req) {
 
 RunPlan plan_run(RunRequest &req) { return req.kernel == "free_space" ? plan_free(req) : plan_grow(req); }
 
-const Family kRegion{"region", {"region_grow", "free_space"}, check, bench_call, nullptr, plan_run};
+const Family kRegion{"region", {"region_grow", "free_space"}, check, bench_call, lower_bound, plan_run};
 BVB_FAMILY(kRegion);
 
 }  // namespace

@@ -59,9 +59,14 @@ struct bvb_region_stats {
 int32_t bvb_region_grow_c(const uint8_t *img, int32_t img_stride, uint8_t *mask, int32_t mask_stride,
                           int32_t width, int32_t height, const struct bvb_region_params *p,
                           int32_t *queue, int32_t queue_cap, struct bvb_region_stats *stats);
+int32_t bvb_region_grow_asm(const uint8_t *img, int32_t img_stride, uint8_t *mask, int32_t mask_stride,
+                            int32_t width, int32_t height, const struct bvb_region_params *p,
+                            int32_t *queue, int32_t queue_cap, struct bvb_region_stats *stats);
 
 void bvb_free_space_c(const uint8_t *mask, int32_t mask_stride, int32_t width, int32_t height,
                       int32_t min_gap, int16_t *rows);
+void bvb_free_space_asm(const uint8_t *mask, int32_t mask_stride, int32_t width, int32_t height,
+                        int32_t min_gap, int16_t *rows);
 
 #ifdef __cplusplus
 }
