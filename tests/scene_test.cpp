@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "io.h"
 #include "scene/camera.h"
 #include "scene/paths.h"
@@ -810,10 +812,13 @@ TEST(SceneIo, WriteReadBackAndReproduce) {
   std::ofstream(other + "/precious.txt") << "keep";
   EXPECT_THROW(write_scene(s, other, true), InputError);
   EXPECT_TRUE(fs::exists(other + "/precious.txt"));
+  // No temporary directory of this process is left behind (one of a run that was killed,
+  // another pid, is not this run's doing).
+  const std::string mine = ".tmp." + std::to_string(getpid());
   for (const auto &e : fs::directory_iterator(fs::path(dir).parent_path())) {
     const std::string n = e.path().filename().string();
     if (n.rfind("scene_test_io", 0) == 0) {
-      EXPECT_EQ(n.find(".tmp."), std::string::npos) << n;
+      EXPECT_EQ(n.find(mine), std::string::npos) << n;
     }
   }
 }
