@@ -234,8 +234,13 @@ struct bvb_flow_avoid_params {
   int32_t thresh_q9;   /* T: mean |u| + |v| over a half, Q9 pixels of the scaled band */
   int32_t stall_q9;    /* both halves at or below this after a step forward: stalled */
   int32_t turn_frames; /* a turn decision is kept this many frames (>= 1) */
+  int32_t stall_turn_frames; /* ... and this many after a stall (>= 1) */
   int32_t rot_ticks;   /* an encoder difference above this is a rotation */
   int32_t light_tol;   /* a band mean that moved more than this (grey levels): the light changed */
+  int32_t black;       /* the camera's black level (grey levels): a gain of the light scales
+                        * intensity - black */
+  int32_t norm_level;  /* > 0: both bands scaled to this mean above black (grey levels) before
+                        * the flow; 0: the previous band scaled to the current one's */
 };
 
 struct bvb_flow_avoid_state {
@@ -247,7 +252,8 @@ struct bvb_flow_avoid_state {
   int32_t slot;        /* which of the two band slots below holds the previous band */
   int32_t bright;      /* the previous band's mean intensity */
   int32_t frames;
-  int32_t pad[3];
+  int32_t level_q4;    /* the mean above black of the band in the current slot, Q4 */
+  int32_t pad[2];
   /* then two slots, BVB_FLOW_AVOID_SLOT_BYTES each: the scaled bands of the previous and the
    * current frame, taking turns (no copy from frame to frame) */
 };
@@ -260,6 +266,8 @@ struct bvb_flow_avoid_state {
 #define BVB_FLOW_AVOID_COEF_BYTES(w, rows, scale) BVB_HS_COEF_BYTES((w) / (scale), (rows) / (scale))
 #define BVB_FLOW_AVOID_MAX_MAG (8 << BVB_HS_UV_FRAC_BITS) /* per-pixel limit, Q9 */
 #define BVB_FLOW_AVOID_STAGES 4
+#define BVB_FLOW_AVOID_GAIN_MIN 1024  /* the light compensation's gain, Q12: 1/4 .. 8 */
+#define BVB_FLOW_AVOID_GAIN_MAX 32768
 
 /* diag of flow_avoid */
 #define BVB_FLOW_DIAG_STAGES 0
@@ -269,6 +277,7 @@ struct bvb_flow_avoid_state {
 #define BVB_FLOW_DIAG_DLEFT 4     /* encoder increments since the previous frame */
 #define BVB_FLOW_DIAG_DRIGHT 5
 #define BVB_FLOW_DIAG_LATCH 6
+#define BVB_FLOW_DIAG_EXPANSION 7 /* mean u right half - mean u left half, Q9 px (0: no flow) */
 
 enum bvb_flow_mode {
   BVB_FLOW_MODE_FLOW = 0,  /* the decision came from the flow */
