@@ -41,16 +41,14 @@ static int32_t gain_q12(int32_t to, int32_t from) {
   return g < BVB_FLOW_AVOID_GAIN_MIN ? BVB_FLOW_AVOID_GAIN_MIN : g > BVB_FLOW_AVOID_GAIN_MAX ? BVB_FLOW_AVOID_GAIN_MAX : g;
 }
 
-/* b = black + (b - black) gain, rounded half up, clamped to 0..255, in place. Returns the sum. */
-static int32_t apply_gain(uint8_t *b, int32_t n, int32_t black, int32_t gain) {
-  int32_t total = 0;
+
+/* b = black + (b - black) gain, rounded half up, clamped to 0..255, in place. */
+static void apply_gain(uint8_t *b, int32_t n, int32_t black, int32_t gain) {
+  if (gain == 1 << 12) return;
   for (int32_t i = 0; i < n; ++i) {
-    int32_t v = (((b[i] - black) * gain + 2048) >> 12) + black;
-    v = v < 0 ? 0 : v > 255 ? 255 : v;
-    b[i] = (uint8_t)v;
-    total += v;
+    const int32_t v = (((b[i] - black) * gain + 2048) >> 12) + black;
+    b[i] = (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v);
   }
-  return total;
 }
 
 /* Sum of min(|u| + |v|, BVB_FLOW_AVOID_MAX_MAG) over columns [x0, x1) of every row. */
@@ -109,8 +107,7 @@ int32_t bvb_pipe_flow_avoid_run(const struct bvb_flow_avoid_kernels *k, const ui
   const int32_t translated = dl > 0 && dr > 0 && iabs(dl - dr) <= p->rot_ticks;
   const int32_t total = scale_band(frame + p->band_top * stride, stride, width, p->band_rows, s, cur);
   const int32_t bright = total / (ws * rs);
-  int32_t level = level_q4(total, ws * rs, p->black);
-  const int32_t prev_level = first ? level : state->level_q4;
+  const int32_t level = level_q4(total, ws * rs, p->black);
   int32_t mode, decision = BVB_PIPE_FORWARD, mean_l = -1, mean_r = -1, expansion = 0;
   if (turn_left > 0) {
     mode = BVB_FLOW_MODE_TURN;
@@ -132,6 +129,7 @@ int32_t bvb_pipe_flow_avoid_run(const struct bvb_flow_avoid_kernels *k, const ui
   state->have_prev = 1;
   state->slot = cur_slot;
   state->bright = bright;
+  const int32_t prev_level = first ? level : state->level_q4;
   state->level_q4 = level;
   state->frames = first ? 1 : state->frames + 1;
   if (++stage >= limit) goto stopped;
@@ -139,11 +137,10 @@ int32_t bvb_pipe_flow_avoid_run(const struct bvb_flow_avoid_kernels *k, const ui
   /* 2, 3: the flow from the previous band to this one */
   int16_t *uv = flow_a;
   if (mode == BVB_FLOW_MODE_FLOW) {
-    /* A global gain of the light, from frame to frame or against norm_level, leaves the
-     * brightness constancy and the contrast Horn-Schunck's alpha is measured against. */
-    const int32_t target = p->norm_level > 0 ? 16 * p->norm_level : level;
-    apply_gain(prev, ws * rs, p->black, gain_q12(target, prev_level));
-    if (target != level) state->level_q4 = level_q4(apply_gain(cur, ws * rs, p->black, gain_q12(target, level)), ws * rs, p->black);
+    /* A change of the light's gain between the frames (flicker, a step) breaks the brightness
+     * constancy Horn-Schunck rests on: the previous band is brought to the current one's level.
+     * Its slot is the next frame's current slot, so scaling it in place costs nothing later. */
+    if (p->light_gain) apply_gain(prev, ws * rs, p->black, gain_q12(level, prev_level));
     k->hs_prepare(prev, cur, ws, rs, ws, p->alpha2_q4, coef);
     if (++stage >= limit) goto stopped;
     int32_t *z = (int32_t *)flow_a;
@@ -166,7 +163,7 @@ int32_t bvb_pipe_flow_avoid_run(const struct bvb_flow_avoid_kernels *k, const ui
     mean_r = flow_sum(uv, ws, rs, half, ws) / ((ws - half) * rs);
     expansion = u_sum(uv, ws, rs, half, ws) / ((ws - half) * rs) - u_sum(uv, ws, rs, 0, half) / (half * rs);
     const int32_t below = mean_l <= p->thresh_q9 && mean_r <= p->thresh_q9;
-    const int32_t stalled = below && expansion <= p->stall_q9;
+    const int32_t stalled = below && iabs(expansion) <= p->stall_q9;
     if (below && !stalled) {
       decision = BVB_PIPE_FORWARD;
       latch = 0;

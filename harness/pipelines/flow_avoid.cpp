@@ -47,7 +47,7 @@ bvb_flow_avoid_params params_for(const FrameInput &in, Params &prm) {
   p.rot_ticks = prm.get_int("rot_ticks", 2, 0, 1000000);
   p.light_tol = prm.get_int("light_tol", 8, 0, 255);
   p.black = prm.get_int("black", 16, 0, 254);
-  p.norm_level = prm.get_int("norm_level", 0, 0, 255);
+  p.light_gain = prm.get_int("light_gain", 1, 0, 1);
   return p;
 }
 
