@@ -28,6 +28,29 @@ static int32_t scale_band(const uint8_t *band, int32_t stride, int32_t width, in
   return total;
 }
 
+/* The band's mean above the black level, Q4 grey levels, at least 1 (1/16 grey level). */
+static int32_t level_q4(int32_t total, int32_t n, int32_t black) {
+  const int32_t l = total * 16 / n - 16 * black;
+  return l < 1 ? 1 : l;
+}
+
+/* The gain, Q12, that takes a band at level `from` to level `to` (Q4 each), limited to
+ * BVB_FLOW_AVOID_GAIN_MIN..MAX. */
+static int32_t gain_q12(int32_t to, int32_t from) {
+  const int32_t g = (to << 12) / from;
+  return g < BVB_FLOW_AVOID_GAIN_MIN ? BVB_FLOW_AVOID_GAIN_MIN : g > BVB_FLOW_AVOID_GAIN_MAX ? BVB_FLOW_AVOID_GAIN_MAX : g;
+}
+
+
+/* b = black + (b - black) gain, rounded half up, clamped to 0..255, in place. */
+static void apply_gain(uint8_t *b, int32_t n, int32_t black, int32_t gain) {
+  if (gain == 1 << 12) return;
+  for (int32_t i = 0; i < n; ++i) {
+    const int32_t v = (((b[i] - black) * gain + 2048) >> 12) + black;
+    b[i] = (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v);
+  }
+}
+
 /* Sum of min(|u| + |v|, BVB_FLOW_AVOID_MAX_MAG) over columns [x0, x1) of every row. */
 static int32_t flow_sum(const int16_t *uv, int32_t width, int32_t rows, int32_t x0, int32_t x1) {
   int32_t sum = 0;
@@ -37,6 +60,19 @@ static int32_t flow_sum(const int16_t *uv, int32_t width, int32_t rows, int32_t 
       int32_t m = iabs(r[2 * x]) + iabs(r[2 * x + 1]);
       if (m > BVB_FLOW_AVOID_MAX_MAG) m = BVB_FLOW_AVOID_MAX_MAG;
       sum += m;
+    }
+  }
+  return sum;
+}
+
+/* Sum of u, limited to +-BVB_FLOW_AVOID_MAX_MAG, over columns [x0, x1) of every row. */
+static int32_t u_sum(const int16_t *uv, int32_t width, int32_t rows, int32_t x0, int32_t x1) {
+  int32_t sum = 0;
+  for (int32_t y = 0; y < rows; ++y) {
+    const int16_t *r = uv + 2 * (y * width);
+    for (int32_t x = x0; x < x1; ++x) {
+      const int32_t u = r[2 * x];
+      sum += u > BVB_FLOW_AVOID_MAX_MAG ? BVB_FLOW_AVOID_MAX_MAG : u < -BVB_FLOW_AVOID_MAX_MAG ? -BVB_FLOW_AVOID_MAX_MAG : u;
     }
   }
   return sum;
@@ -69,8 +105,10 @@ int32_t bvb_pipe_flow_avoid_run(const struct bvb_flow_avoid_kernels *k, const ui
   int32_t latch = first ? 0 : state->latch;
   const int32_t have_prev = first ? 0 : state->have_prev;
   const int32_t translated = dl > 0 && dr > 0 && iabs(dl - dr) <= p->rot_ticks;
-  const int32_t bright = scale_band(frame + p->band_top * stride, stride, width, p->band_rows, s, cur) / (ws * rs);
-  int32_t mode, decision = BVB_PIPE_FORWARD, mean_l = -1, mean_r = -1;
+  const int32_t total = scale_band(frame + p->band_top * stride, stride, width, p->band_rows, s, cur);
+  const int32_t bright = total / (ws * rs);
+  const int32_t level = level_q4(total, ws * rs, p->black);
+  int32_t mode, decision = BVB_PIPE_FORWARD, mean_l = -1, mean_r = -1, expansion = 0;
   if (turn_left > 0) {
     mode = BVB_FLOW_MODE_TURN;
     decision = turn;
@@ -91,12 +129,18 @@ int32_t bvb_pipe_flow_avoid_run(const struct bvb_flow_avoid_kernels *k, const ui
   state->have_prev = 1;
   state->slot = cur_slot;
   state->bright = bright;
+  const int32_t prev_level = first ? level : state->level_q4;
+  state->level_q4 = level;
   state->frames = first ? 1 : state->frames + 1;
   if (++stage >= limit) goto stopped;
 
   /* 2, 3: the flow from the previous band to this one */
   int16_t *uv = flow_a;
   if (mode == BVB_FLOW_MODE_FLOW) {
+    /* A change of the light's gain between the frames (flicker, a step) breaks the brightness
+     * constancy Horn-Schunck rests on: the previous band is brought to the current one's level.
+     * Its slot is the next frame's current slot, so scaling it in place costs nothing later. */
+    if (p->light_gain) apply_gain(prev, ws * rs, p->black, gain_q12(level, prev_level));
     k->hs_prepare(prev, cur, ws, rs, ws, p->alpha2_q4, coef);
     if (++stage >= limit) goto stopped;
     int32_t *z = (int32_t *)flow_a;
@@ -117,15 +161,17 @@ int32_t bvb_pipe_flow_avoid_run(const struct bvb_flow_avoid_kernels *k, const ui
     const int32_t half = ws / 2;
     mean_l = flow_sum(uv, ws, rs, 0, half) / (half * rs);
     mean_r = flow_sum(uv, ws, rs, half, ws) / ((ws - half) * rs);
-    const int32_t stalled = mean_l <= p->stall_q9 && mean_r <= p->stall_q9;
-    if (mean_l <= p->thresh_q9 && mean_r <= p->thresh_q9 && !stalled) {
+    expansion = u_sum(uv, ws, rs, half, ws) / ((ws - half) * rs) - u_sum(uv, ws, rs, 0, half) / (half * rs);
+    const int32_t below = mean_l <= p->thresh_q9 && mean_r <= p->thresh_q9;
+    const int32_t stalled = below && iabs(expansion) <= p->stall_q9;
+    if (below && !stalled) {
       decision = BVB_PIPE_FORWARD;
       latch = 0;
     } else {
       if (stalled) mode = BVB_FLOW_MODE_STALL;
       if (!latch) latch = mean_l <= mean_r ? BVB_PIPE_LEFT : BVB_PIPE_RIGHT;
       decision = turn = latch;
-      turn_left = p->turn_frames - 1;
+      turn_left = (stalled ? p->stall_turn_frames : p->turn_frames) - 1;
     }
   }
   out->diag[BVB_FLOW_DIAG_MODE] = mode;
@@ -140,6 +186,7 @@ stopped:
   out->diag[BVB_FLOW_DIAG_LEFT] = mean_l;
   out->diag[BVB_FLOW_DIAG_RIGHT] = mean_r;
   out->diag[BVB_FLOW_DIAG_LATCH] = latch;
+  out->diag[BVB_FLOW_DIAG_EXPANSION] = expansion;
   return out->decision;
 }
 

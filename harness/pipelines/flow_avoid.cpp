@@ -10,7 +10,7 @@ namespace bvb {
 namespace {
 
 const std::vector<std::string> kDiag = {"stages", "flow_left_q9", "flow_right_q9", "mode",
-                                        "d_left", "d_right",      "latch"};
+                                        "d_left", "d_right",      "latch", "expansion_q9"};
 enum { kFrame, kInfo, kParams, kState, kResult, kCoef, kFlowA, kFlowB };
 
 // The image row where the floor is `dist_in` ahead of the camera (camera.h): the band stops
@@ -41,10 +41,13 @@ bvb_flow_avoid_params params_for(const FrameInput &in, Params &prm) {
                             h - p.band_top);
   if (p.band_rows / p.scale < 2 || w / p.scale < 2) throw InputError("flow_avoid: the scaled band is smaller than 2x2");
   p.thresh_q9 = prm.get_int("thresh_q9", 80, 0, BVB_FLOW_AVOID_MAX_MAG);
-  p.stall_q9 = prm.get_int("stall_q9", p.thresh_q9 / 8, 0, BVB_FLOW_AVOID_MAX_MAG);
+  p.stall_q9 = prm.get_int("stall_q9", p.thresh_q9 / 16, 0, BVB_FLOW_AVOID_MAX_MAG);
   p.turn_frames = prm.get_int("turn_frames", 10, 1, 1000);
+  p.stall_turn_frames = prm.get_int("stall_turn_frames", 40, 1, 1000);
   p.rot_ticks = prm.get_int("rot_ticks", 2, 0, 1000000);
   p.light_tol = prm.get_int("light_tol", 8, 0, 255);
+  p.black = prm.get_int("black", 16, 0, 254);
+  p.light_gain = prm.get_int("light_gain", 1, 0, 1);
   return p;
 }
 

@@ -98,7 +98,22 @@
  *     scenes' 0.5 in per frame a near obstacle moves several pixels per frame at full
  *     resolution, beyond what Horn-Schunck without a pyramid follows; its flow is then
  *     underestimated, the more the nearer it is.
- *   Stage 2, Horn-Schunck prepare (bvb/hornschunck.h) on the previous and the current band.
+ *   Stage 2, the light, then Horn-Schunck prepare (bvb/hornschunck.h) on the previous and the
+ *     current band. A global change of the light's gain between the two frames (flicker, a
+ *     step) breaks the brightness constancy the flow rests on: every pixel changes by
+ *     (gain - 1)(I - black), which Horn-Schunck reads as motion, most where the band is bright
+ *     and least textured. The bands' levels, mean - black (Q4, at least 1/16; black = the
+ *     camera's black level, 16 for BT.601 studio-range Y), give the gain
+ *     g = (level_cur << 12) / level_prev (Q12, limited to 1/4..8), and with light_gain = 1
+ *     (the harness's default) the previous band is scaled in place to
+ *     I' = black + ((I - black) g + 2048 >> 12), clamped to 0..255 (nothing when g = 1; its
+ *     slot becomes the next frame's current slot, so nothing is lost). The current band is not
+ *     touched: what is left is the flow at the current frame's light. The mean also moves when
+ *     the view does (a box growing in one half), and that part is taken for a gain too: on the
+ *     bundled boxes_approach (no change of the light) 3 of its 7 blocked frames then see L <= R
+ *     by 1..11 Q9 where they saw L > R without the compensation. A change of the contrast
+ *     itself (a lasting step to a dimmer light) is not undone: Horn-Schunck's alpha then weighs
+ *     more against the weaker gradients and the flow of the same motion comes out smaller.
  *   Stage 3, `iterations` (10) Jacobi iterations from zero flow, ping-ponging flow_a/flow_b.
  *   Stage 4, the balance rule. A pixel's flow magnitude is |u| + |v| (Q9 px of the scaled band,
  *     limited to 8 px so that sums fit 32 bits at every size); L and R are its means over the
@@ -108,9 +123,19 @@
  *       forward when L <= thresh_q9 and R <= thresh_q9 (80 = 0.16 px per frame, both halves);
  *       otherwise turn toward the smaller side (left when L <= R, else right), committed for
  *       turn_frames frames (10: 30 deg at the scenes' 3 deg per frame).
- *     Stalled: after a step forward both halves at or below stall_q9 (thresh_q9 / 8): the
- *     wheels turned but the view did not move, the robot is pushing against something it did
- *     not see: decided as a turn (mode BVB_FLOW_MODE_STALL).
+ *     Stalled: both halves at or below thresh_q9 and the expansion
+ *     E = (mean u over the right half) - (mean u over the left half) (u limited to +-8 px,
+ *     integer divisions) within +-stall_q9 (thresh_q9 / 16 = 5): the wheels turned but the
+ *     view did not move, the robot is pushing against something it did not see. A step
+ *     forward moves every point away from the image centre column (u >= 0 right of it, <= 0
+ *     left of it), so E > 0 whenever anything in the band moved with the robot; E < 0 is
+ *     something moving on its own (a mover crossing), not a stall. Sensor noise makes a flow of
+ *     its own (L, R 10..16 on the stalls of the bundled arenas with noise=3, against 20..40 for
+ *     distant walls seen while moving), but of either sign, and it cancels in E (|E| <= 3 on
+ *     those stalls; a test on L and R would need a noise floor). A stall is decided as a
+ *     turn (mode BVB_FLOW_MODE_STALL), committed for stall_turn_frames frames (40: 120 deg):
+ *     whatever the robot touches blocks every heading within 90 deg of the direction it ran
+ *     into it, more when it met it at an angle, so a 30 deg turn would probe into it again.
  *     While the robot is in an avoidance manoeuvre (turned, probed, still above threshold) the
  *     turn direction is latched; a forward decision of the flow releases it.
  *   The robot's own rotation. A turn in place moves the whole image by about fx * 3 deg (7 px
@@ -119,9 +144,16 @@
  *   both wheels advanced and |dleft - dright| <= rot_ticks. The frames of a committed turn
  *   compute no flow (mode TURN); the first frame after a turn (or a stop, or frame 0) takes
  *   one step forward without a flow decision (mode PROBE), and the flow of that step decides
- *   the next frame. A change of the light between the two frames (the bands' mean intensity
- *   moved by more than light_tol grey levels) breaks the brightness constancy the flow rests
- *   on: that frame decides nothing either and steps forward (mode LIGHT).
+ *   the next frame. A large change of the light between the two frames (the bands' mean
+ *   intensity moved by more than light_tol grey levels, 8) is not trusted to the gain
+ *   compensation of stage 2 (clipped pixels, a change that is not a gain): that frame decides
+ *   nothing either and steps forward (mode LIGHT).
+ *   Known limits (2,000-frame closed loops of the bundled arenas): a near wall filling the band
+ *   moves more than a pixel of the scaled band per frame and its flow is underestimated, the
+ *   more after a lasting drop of the light (see stage 2), so a head-on approach may stay below
+ *   the threshold to contact; the probe step after a turn is blind, and a turn begun against an
+ *   obstacle may step into it once before the stall turns the robot away; a mover that runs
+ *   into the robot from the side is not in view before it touches.
  *   diag: BVB_FLOW_DIAG_*.
  *   Buffers (at the defaults they are small; at scale 1 frame-sized, hence SDRAM): coef,
  *     BVB_FLOW_AVOID_COEF_BYTES; flow_a, flow_b, BVB_FLOW_AVOID_FLOW_BYTES each; state,
@@ -232,10 +264,14 @@ struct bvb_flow_avoid_params {
   int32_t band_top, band_rows; /* the frame rows the flow is computed and summed over */
   int32_t scale;       /* 1, 2, 4 or 8: the band is averaged over scale x scale blocks first */
   int32_t thresh_q9;   /* T: mean |u| + |v| over a half, Q9 pixels of the scaled band */
-  int32_t stall_q9;    /* both halves at or below this after a step forward: stalled */
+  int32_t stall_q9;    /* below the threshold and the expansion E at or below this: stalled */
   int32_t turn_frames; /* a turn decision is kept this many frames (>= 1) */
+  int32_t stall_turn_frames; /* ... and this many after a stall (>= 1) */
   int32_t rot_ticks;   /* an encoder difference above this is a rotation */
   int32_t light_tol;   /* a band mean that moved more than this (grey levels): the light changed */
+  int32_t black;       /* the camera's black level (grey levels): a gain of the light scales
+                        * intensity - black */
+  int32_t light_gain;  /* 1: the previous band is brought to the current one's level (stage 2) */
 };
 
 struct bvb_flow_avoid_state {
@@ -247,7 +283,8 @@ struct bvb_flow_avoid_state {
   int32_t slot;        /* which of the two band slots below holds the previous band */
   int32_t bright;      /* the previous band's mean intensity */
   int32_t frames;
-  int32_t pad[3];
+  int32_t level_q4;    /* the previous band's mean above black, Q4 (before any gain) */
+  int32_t pad[2];
   /* then two slots, BVB_FLOW_AVOID_SLOT_BYTES each: the scaled bands of the previous and the
    * current frame, taking turns (no copy from frame to frame) */
 };
@@ -260,6 +297,8 @@ struct bvb_flow_avoid_state {
 #define BVB_FLOW_AVOID_COEF_BYTES(w, rows, scale) BVB_HS_COEF_BYTES((w) / (scale), (rows) / (scale))
 #define BVB_FLOW_AVOID_MAX_MAG (8 << BVB_HS_UV_FRAC_BITS) /* per-pixel limit, Q9 */
 #define BVB_FLOW_AVOID_STAGES 4
+#define BVB_FLOW_AVOID_GAIN_MIN 1024  /* the light compensation's gain, Q12: 1/4 .. 8 */
+#define BVB_FLOW_AVOID_GAIN_MAX 32768
 
 /* diag of flow_avoid */
 #define BVB_FLOW_DIAG_STAGES 0
@@ -269,6 +308,7 @@ struct bvb_flow_avoid_state {
 #define BVB_FLOW_DIAG_DLEFT 4     /* encoder increments since the previous frame */
 #define BVB_FLOW_DIAG_DRIGHT 5
 #define BVB_FLOW_DIAG_LATCH 6
+#define BVB_FLOW_DIAG_EXPANSION 7 /* E: mean u right half - mean u left half, Q9 px (0: no flow) */
 
 enum bvb_flow_mode {
   BVB_FLOW_MODE_FLOW = 0,  /* the decision came from the flow */
