@@ -16,6 +16,12 @@ static int32_t pick_seed(const uint8_t *row, int32_t width, int32_t ground, int3
   return -1;
 }
 
+/* v * light_q8 / 256, rounded, at most 255 (the region growing's limit). */
+static int32_t scale_q8(int32_t v, int32_t light_q8) {
+  const int32_t r = (v * light_q8 + 128) >> 8;
+  return r > 255 ? 255 : r;
+}
+
 /* The mean intensity of the band (rounded down). */
 static int32_t band_mean(const uint8_t *band, int32_t width, int32_t rows, int32_t stride) {
   int32_t sum = 0;
@@ -52,10 +58,14 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
   for (int32_t i = 0; i < BVB_PIPE_DIAG; ++i) out->diag[i] = 0;
 
   /* 1: the seed */
+  /* The light relative to the first frame's scales every intensity difference, the floor
+   * texture's spread and the floor-to-wall contrast alike: the tolerances follow it. */
+  const int32_t light_q8 = first ? 256 : state->light_q8;
+  const int32_t tol = scale_q8(p->tol, light_q8), change_tol = scale_q8(p->change_tol, light_q8);
   const int32_t ground = (state->ground_q8 + 128) >> 8;
   int32_t seed_x = width / 2, found = 1;
   if (!first) {
-    const int32_t s = pick_seed(band + (rows - 1) * stride, width, ground, p->tol, p->seed_search);
+    const int32_t s = pick_seed(band + (rows - 1) * stride, width, ground, tol, p->seed_search);
     found = s >= 0;
     if (found) seed_x = s;
     if (seed_x != width / 2) flags |= BVB_SEG_FLAG_SEED_MOVED;
@@ -67,24 +77,46 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
   struct bvb_region_stats st;
   rp.seed_x = seed_x;
   rp.seed_y = rows - 1;
-  rp.tol = p->tol;
+  rp.tol = tol;
   rp.connectivity = 4;
   k->region_grow(band, stride, mask, width, width, rows, &rp, queue, p->queue_cap, &st);
   if (st.dropped) flags |= BVB_SEG_FLAG_DROPPED;
   if (++stage >= limit) goto stopped;
 
   /* 3: ground tracking */
-  const int32_t mean = st.count > 0 ? st.sum / st.count : 0;
+  int32_t mean = st.count > 0 ? st.sum / st.count : 0;
   const int32_t fmean = band_mean(band, width, rows, stride);
-  int32_t ground_q8 = state->ground_q8, lost = 0;
+  int32_t ground_q8 = state->ground_q8, lost = 0, light = light_q8;
   if (first) {
     ground_q8 = mean << 8;
-  } else if (!found || st.count < p->min_region || iabs(mean - ground) > p->change_tol) {
+  } else if (!found || st.count < p->min_region || iabs(mean - ground) > change_tol) {
     /* A change of the light moves the whole frame with the ground; a region grown over
      * something else leaves the rest of the frame as it was. */
     const int32_t dm = mean - ground, df = fmean - state->frame_mean;
     if (found && st.count >= p->min_region && (dm > 0) == (df > 0) && 2 * iabs(df) >= iabs(dm)) {
       flags |= BVB_SEG_FLAG_CHANGE;
+      /* The light's gain is the band's brightness ratio across the change (one step of the
+       * robot apart, the two bands see nearly the same things). The region was grown with the
+       * old light's tolerance, which at a darker light reaches past the floor-to-wall contrast:
+       * it is grown again from a seed near the ground predicted at the new light. */
+      if (state->frame_mean > 0) {
+        light = (int32_t)(((int64_t)light_q8 * fmean + state->frame_mean / 2) / state->frame_mean);
+        if (light < BVB_SEG_LIGHT_MIN_Q8) light = BVB_SEG_LIGHT_MIN_Q8;
+        if (light > BVB_SEG_LIGHT_MAX_Q8) light = BVB_SEG_LIGHT_MAX_Q8;
+        const int32_t tol2 = scale_q8(p->tol, light);
+        const int32_t pred = (int32_t)(((int64_t)state->ground_q8 * fmean + state->frame_mean * 128) /
+                                       ((int64_t)state->frame_mean << 8));
+        const int32_t s = pick_seed(band + (rows - 1) * stride, width, pred, tol2, p->seed_search);
+        if (s >= 0) {
+          seed_x = s;
+          rp.seed_x = s;
+          rp.tol = tol2;
+          k->region_grow(band, stride, mask, width, width, rows, &rp, queue, p->queue_cap, &st);
+          mean = st.count > 0 ? st.sum / st.count : 0;
+          if (st.dropped) flags |= BVB_SEG_FLAG_DROPPED;
+          flags = (flags & ~BVB_SEG_FLAG_SEED_MOVED) | (seed_x != width / 2 ? BVB_SEG_FLAG_SEED_MOVED : 0);
+        }
+      }
       ground_q8 = mean << 8;
     } else {
       flags |= BVB_SEG_FLAG_LOST;
@@ -99,6 +131,7 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
     ground_q8 += ((mean << 8) - ground_q8) >> p->avg_shift;
   }
   state->ground_q8 = ground_q8;
+  state->light_q8 = light;
   state->lost = lost;
   state->frame_mean = fmean;
   state->changes = (first ? 0 : state->changes) + ((flags & BVB_SEG_FLAG_CHANGE) != 0);

@@ -181,7 +181,8 @@ struct bvb_seg_avoid_state {
   int32_t changes;   /* sudden ground changes seen */
   int32_t lost;      /* consecutive frames without the ground */
   int32_t frame_mean; /* the previous frame's mean below the horizon */
-  int32_t pad[2];
+  int32_t light_q8;  /* the light relative to the first frame's, Q8 (256: the same) */
+  int32_t pad[1];
 };
 
 #define BVB_SEG_AVOID_STATE_BYTES ((int32_t)sizeof(struct bvb_seg_avoid_state))
@@ -190,6 +191,9 @@ struct bvb_seg_avoid_state {
 #define BVB_SEG_AVOID_WORK_BYTES(w, queue_cap) \
   (4 * (queue_cap) + BVB_SEG_AVOID_ROWS_BYTES(w) + BVB_MORPH3X3_SCRATCH_BYTES(w))
 #define BVB_SEG_AVOID_STAGES 6
+/* The light estimate's range, Q8: 1/8 to 4 times the first frame's light. */
+#define BVB_SEG_LIGHT_MIN_Q8 32
+#define BVB_SEG_LIGHT_MAX_Q8 1024
 
 #define BVB_SEG_FLAG_CHANGE 1
 #define BVB_SEG_FLAG_SEED_MOVED 2
