@@ -57,12 +57,28 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
   out->x_q16 = out->y_q16 = out->heading_q16 = 0;
   for (int32_t i = 0; i < BVB_PIPE_DIAG; ++i) out->diag[i] = 0;
 
-  /* 1: the seed */
-  /* The light relative to the first frame's scales every intensity difference, the floor
-   * texture's spread and the floor-to-wall contrast alike: the tolerances follow it. */
-  const int32_t light_q8 = first ? 256 : state->light_q8;
-  const int32_t tol = scale_q8(p->tol, light_q8), change_tol = scale_q8(p->change_tol, light_q8);
-  const int32_t ground = (state->ground_q8 + 128) >> 8;
+  /* 1: the light and the seed */
+  /* A change of the light scales every intensity at once; the robot's own step changes the
+   * band's mean brightness much less (the scenes: at most about 7% from one frame to the next).
+   * A jump of more than light_jump_q8 / 256 is taken for the light, measured by the ratio of
+   * the two frames' band means (the two bands see nearly the same things). The light, relative
+   * to the first frame's, scales the tolerances: the floor texture's spread and the
+   * floor-to-wall contrast scale with it. It is measured only at such a jump, never from the
+   * region, so a region grown up a wall cannot feed back into the tolerance. */
+  const int32_t fmean = band_mean(band, width, rows, stride);
+  const int32_t prev = state->frame_mean;
+  int32_t light = first ? 256 : state->light_q8, ground_q8 = state->ground_q8, jump = 0;
+  if (!first && prev > 0 && 256 * iabs(fmean - prev) > p->light_jump_q8 * prev) {
+    jump = 1;
+    light = (int32_t)(((int64_t)light * fmean + prev / 2) / prev);
+    if (light < BVB_SEG_LIGHT_MIN_Q8) light = BVB_SEG_LIGHT_MIN_Q8;
+    if (light > BVB_SEG_LIGHT_MAX_Q8) light = BVB_SEG_LIGHT_MAX_Q8;
+    /* the ground as the new light shows it */
+    ground_q8 = (int32_t)(((int64_t)ground_q8 * fmean + prev / 2) / prev);
+    flags |= BVB_SEG_FLAG_CHANGE;
+  }
+  const int32_t tol = scale_q8(p->tol, light), change_tol = scale_q8(p->change_tol, light);
+  const int32_t ground = (ground_q8 + 128) >> 8;
   int32_t seed_x = width / 2, found = 1;
   if (!first) {
     const int32_t s = pick_seed(band + (rows - 1) * stride, width, ground, tol, p->seed_search);
@@ -84,39 +100,16 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
   if (++stage >= limit) goto stopped;
 
   /* 3: ground tracking */
-  int32_t mean = st.count > 0 ? st.sum / st.count : 0;
-  const int32_t fmean = band_mean(band, width, rows, stride);
-  int32_t ground_q8 = state->ground_q8, lost = 0, light = light_q8;
-  if (first) {
+  const int32_t mean = st.count > 0 ? st.sum / st.count : 0;
+  int32_t lost = 0;
+  if (first || (jump && found && st.count >= p->min_region)) {
     ground_q8 = mean << 8;
   } else if (!found || st.count < p->min_region || iabs(mean - ground) > change_tol) {
     /* A change of the light moves the whole frame with the ground; a region grown over
      * something else leaves the rest of the frame as it was. */
-    const int32_t dm = mean - ground, df = fmean - state->frame_mean;
+    const int32_t dm = mean - ground, df = fmean - prev;
     if (found && st.count >= p->min_region && (dm > 0) == (df > 0) && 2 * iabs(df) >= iabs(dm)) {
       flags |= BVB_SEG_FLAG_CHANGE;
-      /* The light's gain is the band's brightness ratio across the change (one step of the
-       * robot apart, the two bands see nearly the same things). The region was grown with the
-       * old light's tolerance, which at a darker light reaches past the floor-to-wall contrast:
-       * it is grown again from a seed near the ground predicted at the new light. */
-      if (state->frame_mean > 0) {
-        light = (int32_t)(((int64_t)light_q8 * fmean + state->frame_mean / 2) / state->frame_mean);
-        if (light < BVB_SEG_LIGHT_MIN_Q8) light = BVB_SEG_LIGHT_MIN_Q8;
-        if (light > BVB_SEG_LIGHT_MAX_Q8) light = BVB_SEG_LIGHT_MAX_Q8;
-        const int32_t tol2 = scale_q8(p->tol, light);
-        const int32_t pred = (int32_t)(((int64_t)state->ground_q8 * fmean + state->frame_mean * 128) /
-                                       ((int64_t)state->frame_mean << 8));
-        const int32_t s = pick_seed(band + (rows - 1) * stride, width, pred, tol2, p->seed_search);
-        if (s >= 0) {
-          seed_x = s;
-          rp.seed_x = s;
-          rp.tol = tol2;
-          k->region_grow(band, stride, mask, width, width, rows, &rp, queue, p->queue_cap, &st);
-          mean = st.count > 0 ? st.sum / st.count : 0;
-          if (st.dropped) flags |= BVB_SEG_FLAG_DROPPED;
-          flags = (flags & ~BVB_SEG_FLAG_SEED_MOVED) | (seed_x != width / 2 ? BVB_SEG_FLAG_SEED_MOVED : 0);
-        }
-      }
       ground_q8 = mean << 8;
     } else {
       flags |= BVB_SEG_FLAG_LOST;

@@ -172,6 +172,7 @@ struct bvb_seg_avoid_params {
   int32_t go_rows;       /* forward when the centre columns' free space exceeds this */
   int32_t centre_lo, centre_hi; /* the centre columns [lo, hi) */
   int32_t queue_cap;     /* entries of the region growing queue (in work) */
+  int32_t light_jump_q8; /* a band mean that moved by more than this / 256 of itself: the light */
 };
 
 struct bvb_seg_avoid_state {
