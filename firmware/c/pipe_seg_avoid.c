@@ -70,11 +70,11 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
   int32_t light = first ? 256 : state->light_q8, ground_q8 = state->ground_q8, jump = 0;
   if (!first && prev > 0 && 256 * iabs(fmean - prev) > p->light_jump_q8 * prev) {
     jump = 1;
-    light = (int32_t)(((int64_t)light * fmean + prev / 2) / prev);
+    light = (light * fmean + prev / 2) / prev; /* both products fit 32 bits: L <= 1024, G <= 255 << 8 */
     if (light < BVB_SEG_LIGHT_MIN_Q8) light = BVB_SEG_LIGHT_MIN_Q8;
     if (light > BVB_SEG_LIGHT_MAX_Q8) light = BVB_SEG_LIGHT_MAX_Q8;
     /* the ground as the new light shows it */
-    ground_q8 = (int32_t)(((int64_t)ground_q8 * fmean + prev / 2) / prev);
+    ground_q8 = (ground_q8 * fmean + prev / 2) / prev;
     flags |= BVB_SEG_FLAG_CHANGE;
   }
   const int32_t tol = scale_q8(p->tol, light), change_tol = scale_q8(p->change_tol, light);
