@@ -24,9 +24,13 @@ static int32_t scale_q8(int32_t v, int32_t light_q8) {
 
 /* The mean intensity of the band (rounded down). */
 static int32_t band_mean(const uint8_t *band, int32_t width, int32_t rows, int32_t stride) {
+  /* Packed rows (the camera's frames) are summed as one run: no per-row loop overhead. */
+  const int32_t run = stride == width ? width * rows : width, runs = stride == width ? 1 : rows;
   int32_t sum = 0;
-  for (int32_t y = 0; y < rows; ++y)
-    for (int32_t x = 0; x < width; ++x) sum += band[y * stride + x];
+  for (int32_t y = 0; y < runs; ++y) {
+    const uint8_t *r = band + y * stride;
+    for (int32_t x = 0; x < run; ++x) sum += r[x];
+  }
   return sum / (width * rows);
 }
 
