@@ -16,11 +16,21 @@ static int32_t pick_seed(const uint8_t *row, int32_t width, int32_t ground, int3
   return -1;
 }
 
+/* v * light_q8 / 256, rounded, at most 255 (the region growing's limit). */
+static int32_t scale_q8(int32_t v, int32_t light_q8) {
+  const int32_t r = (v * light_q8 + 128) >> 8;
+  return r > 255 ? 255 : r;
+}
+
 /* The mean intensity of the band (rounded down). */
 static int32_t band_mean(const uint8_t *band, int32_t width, int32_t rows, int32_t stride) {
+  /* Packed rows (the camera's frames) are summed as one run: no per-row loop overhead. */
+  const int32_t run = stride == width ? width * rows : width, runs = stride == width ? 1 : rows;
   int32_t sum = 0;
-  for (int32_t y = 0; y < rows; ++y)
-    for (int32_t x = 0; x < width; ++x) sum += band[y * stride + x];
+  for (int32_t y = 0; y < runs; ++y) {
+    const uint8_t *r = band + y * stride;
+    for (int32_t x = 0; x < run; ++x) sum += r[x];
+  }
   return sum / (width * rows);
 }
 
@@ -51,11 +61,31 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
   out->x_q16 = out->y_q16 = out->heading_q16 = 0;
   for (int32_t i = 0; i < BVB_PIPE_DIAG; ++i) out->diag[i] = 0;
 
-  /* 1: the seed */
-  const int32_t ground = (state->ground_q8 + 128) >> 8;
+  /* 1: the light and the seed */
+  /* A change of the light scales every intensity at once; the robot's own step changes the
+   * band's mean brightness much less (the scenes: at most about 7% from one frame to the next).
+   * A jump of more than light_jump_q8 / 256 is taken for the light, measured by the ratio of
+   * the two frames' band means (the two bands see nearly the same things). The light, relative
+   * to the first frame's, scales the tolerances: the floor texture's spread and the
+   * floor-to-wall contrast scale with it. It is measured only at such a jump, never from the
+   * region, so a region grown up a wall cannot feed back into the tolerance. */
+  const int32_t fmean = band_mean(band, width, rows, stride);
+  const int32_t prev = state->frame_mean;
+  int32_t light = first ? 256 : state->light_q8, ground_q8 = state->ground_q8, jump = 0;
+  if (!first && prev > 0 && 256 * iabs(fmean - prev) > p->light_jump_q8 * prev) {
+    jump = 1;
+    light = (light * fmean + prev / 2) / prev; /* both products fit 32 bits: L <= 1024, G <= 255 << 8 */
+    if (light < BVB_SEG_LIGHT_MIN_Q8) light = BVB_SEG_LIGHT_MIN_Q8;
+    if (light > BVB_SEG_LIGHT_MAX_Q8) light = BVB_SEG_LIGHT_MAX_Q8;
+    /* the ground as the new light shows it */
+    ground_q8 = (ground_q8 * fmean + prev / 2) / prev;
+    flags |= BVB_SEG_FLAG_CHANGE;
+  }
+  const int32_t tol = scale_q8(p->tol, light), change_tol = scale_q8(p->change_tol, light);
+  const int32_t ground = (ground_q8 + 128) >> 8;
   int32_t seed_x = width / 2, found = 1;
   if (!first) {
-    const int32_t s = pick_seed(band + (rows - 1) * stride, width, ground, p->tol, p->seed_search);
+    const int32_t s = pick_seed(band + (rows - 1) * stride, width, ground, tol, p->seed_search);
     found = s >= 0;
     if (found) seed_x = s;
     if (seed_x != width / 2) flags |= BVB_SEG_FLAG_SEED_MOVED;
@@ -67,7 +97,7 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
   struct bvb_region_stats st;
   rp.seed_x = seed_x;
   rp.seed_y = rows - 1;
-  rp.tol = p->tol;
+  rp.tol = tol;
   rp.connectivity = 4;
   k->region_grow(band, stride, mask, width, width, rows, &rp, queue, p->queue_cap, &st);
   if (st.dropped) flags |= BVB_SEG_FLAG_DROPPED;
@@ -75,14 +105,13 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
 
   /* 3: ground tracking */
   const int32_t mean = st.count > 0 ? st.sum / st.count : 0;
-  const int32_t fmean = band_mean(band, width, rows, stride);
-  int32_t ground_q8 = state->ground_q8, lost = 0;
-  if (first) {
+  int32_t lost = 0;
+  if (first || (jump && found && st.count >= p->min_region)) {
     ground_q8 = mean << 8;
-  } else if (!found || st.count < p->min_region || iabs(mean - ground) > p->change_tol) {
+  } else if (!found || st.count < p->min_region || iabs(mean - ground) > change_tol) {
     /* A change of the light moves the whole frame with the ground; a region grown over
      * something else leaves the rest of the frame as it was. */
-    const int32_t dm = mean - ground, df = fmean - state->frame_mean;
+    const int32_t dm = mean - ground, df = fmean - prev;
     if (found && st.count >= p->min_region && (dm > 0) == (df > 0) && 2 * iabs(df) >= iabs(dm)) {
       flags |= BVB_SEG_FLAG_CHANGE;
       ground_q8 = mean << 8;
@@ -99,6 +128,7 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
     ground_q8 += ((mean << 8) - ground_q8) >> p->avg_shift;
   }
   state->ground_q8 = ground_q8;
+  state->light_q8 = light;
   state->lost = lost;
   state->frame_mean = fmean;
   state->changes = (first ? 0 : state->changes) + ((flags & BVB_SEG_FLAG_CHANGE) != 0);

@@ -29,6 +29,7 @@ bvb_seg_avoid_params params_for(const FrameInput &in, Params &prm) {
   p.centre_lo = prm.get_int("centre_lo", w / 5, 1, w / 2);
   p.centre_hi = prm.get_int("centre_hi", w - w / 5, w / 2, w - 1);
   p.queue_cap = prm.get_int("queue_cap", 2 * (w + h), 1, w * h);
+  p.light_jump_q8 = prm.get_int("light_jump_q8", 32, 0, 256);
   return p;
 }
 

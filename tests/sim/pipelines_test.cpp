@@ -107,6 +107,41 @@ TEST(SegAvoid, LightingStepReseedsTheGround) {
   EXPECT_NEAR(after, diag(run.frames[16].out, "region_mean"), 1.0);
 }
 
+// Closed loop through a change of the light to 0.7 or 1.3 at frame 200. At 0.7 the boxes
+// arena's walls in shadow stand about 21 levels above the floor, within the first light's
+// tolerance of 30: unless the tolerance follows the light the ground region grows up the walls
+// and the robot drives into them. At 1.3 the floor's texture spreads wider than that tolerance
+// and the robot, seeing little floor, mostly turns. The light does not move the arena: the
+// robot must keep going as it did before the step, and the step is a change, not a lost ground.
+TEST(SegAvoid, ClosedLoopThroughALightingStep) {
+  const struct {
+    const char *arena, *gain;
+  } cases[] = {{"boxes", "0.7"}, {"boxes", "1.3"}, {"corridor", "0.7"}};
+  for (const auto &c : cases) {
+    SCOPED_TRACE(std::string(c.arena) + " gain " + c.gain);
+    SceneGenerator gen(parse_scene_spec(std::string("arena=") + c.arena +
+                                        ",path=avoid,uyvy=0,flow=0,frames=600,light_step=200,step_gain=" + c.gain));
+    PipelineRunOptions o;
+    o.impl = "host";
+    o.closed_loop = true;
+    Params params;
+    const PipelineRun run = run_pipeline(pipeline("seg_avoid"), nullptr, nullptr, &gen, params, o);
+    ASSERT_EQ(run.frames.size(), 600u);
+    EXPECT_EQ(run.collisions, 0);
+    int before = 0, after = 0;
+    for (const auto &r : run.frames) {
+      const int flags = int(diag(r.out, "flags"));
+      if (r.in.index == 200) {
+        EXPECT_NE(flags & BVB_SEG_FLAG_CHANGE, 0);
+        EXPECT_EQ(flags & BVB_SEG_FLAG_LOST, 0);
+      }
+      if (r.out.decision == Drive::Forward) ++(r.in.index < 200 ? before : after);
+    }
+    EXPECT_GE(before, 200 * 6 / 10);
+    EXPECT_GE(after, 400 * 6 / 10);
+  }
+}
+
 // A region grown over something that is not floor (the robot's nose at a white wall) leaves the
 // rest of the frame as it was: the ground is lost, not re-seeded, and the robot turns.
 TEST(SegAvoid, WallAtTheRobotsFeetIsNotTakenForGround) {

@@ -29,27 +29,43 @@
  * SEGMENTATION-BASED OBSTACLE AVOIDANCE (seg_avoid; the seed paper's section 2.1.1)
  *   The floor is looked for only below the horizon row (p->horizon, from the camera's tilt: the
  *   floor cannot appear above it): the band of rows horizon .. height-1, `rows` rows.
- *   Stage 1, seed. The ground region is seeded on the bottom row, in the middle column. The
- *     ground intensity G is tracked from frame to frame (state, Q8). From frame 1 on, the seed
- *     is the first pixel of the bottom row within tol of G going outwards from the middle
+ *   Stage 1, the light and the seed. F = the band's mean intensity (sum / pixels, rounded
+ *     down), F' the previous frame's. The light L (state, Q8, 256 = the first frame's light)
+ *     scales the tolerances: t = tol * L / 256 and ct = change_tol * L / 256 (rounded half up,
+ *     at most 255). A change of the light multiplies every intensity, the floor texture's
+ *     spread and the floor-to-wall contrast alike (the boxes arena's walls in shadow are about
+ *     30 levels brighter than the floor; dimmed to 0.7 that is 21, below an unscaled tol of 30).
+ *     L is measured only at a jump of the light, never from the ground region, so a region
+ *     grown up a wall cannot raise the tolerance that let it grow: when
+ *     256 |F - F'| > light_jump_q8 F' (more than 1/8 at the harness's default 32; the robot's
+ *     own step moves F by at most about 7% in the bundled arenas), the light changed:
+ *     L = L * F / F' (rounded, limited to [BVB_SEG_LIGHT_MIN_Q8, BVB_SEG_LIGHT_MAX_Q8]), the
+ *     ground G is predicted at the new light, G = G * F / F' (Q8, rounded), and the frame is
+ *     flagged BVB_SEG_FLAG_CHANGE. Frame 0 takes L = 256. Smaller changes of the light (and a
+ *     flicker) leave L as it was and are followed by G alone (stage 3).
+ *     The ground region is seeded on the bottom row, in the middle column. The ground
+ *     intensity G is tracked from frame to frame (state, Q8). From frame 1 on, the seed is the
+ *     first pixel of the bottom row within t of G (rounded) going outwards from the middle
  *     (x = w/2, w/2-1, w/2+1, w/2-2, ...), at most seed_search pixels away; when there is none
  *     the ground is missing at the robot's feet (see stage 3) and the middle pixel is used.
- *   Stage 2, region growing (bvb_region_grow: 4-connected, tolerance tol against the region's
+ *   Stage 2, region growing (bvb_region_grow: 4-connected, tolerance t against the region's
  *     running mean) over the band, into `mask` (255 floor).
- *   Stage 3, ground tracking. m = the region's mean intensity (sum / count), F = the band's mean
- *     intensity. The ground is
+ *   Stage 3, ground tracking. m = the region's mean intensity (sum / count). The ground is
+ *     - re-seeded at a jump of the light (stage 1) when the seed was found and the region has
+ *       at least min_region pixels: G = m, the new ground is trusted at once, the frame is
+ *       decided as usual;
  *     - as expected when the seed was found, the region has at least min_region pixels and
- *       |m - G| <= change_tol: G += (m - G) >> avg_shift (a running average; arithmetic shift);
+ *       |m - G| <= ct: G += (m - G) >> avg_shift (a running average; arithmetic shift);
  *     - changed by the light when the seed was found, the region is large enough, and the
- *       whole band moved with it: F - F(previous frame) has the sign of m - G and at least half
- *       its size. A change of the light (the scenes' light_step) darkens or brightens everything
- *       at once. G is re-seeded: G = m, the new ground is trusted at once, and the frame is
- *       decided as usual (flag BVB_SEG_FLAG_CHANGE);
+ *       whole band moved with it: F - F' has the sign of m - G and at least half its size
+ *       (a smaller change of the light than stage 1's jump). G is re-seeded: G = m, and the
+ *       frame is decided as usual (flag BVB_SEG_FLAG_CHANGE); L is kept;
  *     - lost otherwise: no bottom-row pixel near G, a small region, or a region whose mean moved
  *       while the rest of the band did not (a region grown over the white wall the robot's nose
- *       is at). The frame is decided as blocked (a turn), G is kept (flag BVB_SEG_FLAG_LOST);
- *       after lost_frames lost frames in a row the ground is re-seeded from the middle pixel's
- *       region (G = m): the robot does not turn for ever if the floor itself has changed.
+ *       is at). The frame is decided as blocked (a turn), G (as predicted at a jump) is kept
+ *       (flag BVB_SEG_FLAG_LOST); after lost_frames lost frames in a row the ground is
+ *       re-seeded from the middle pixel's region (G = m): the robot does not turn for ever if
+ *       the floor itself has changed.
  *     Frame 0 takes G = m.
  *   Stage 4, obstacle map dilation: the region mask is eroded 3x3 (bvb_erode3x3_u8) into
  *     `map`: the obstacle map (its complement) is dilated, obstacles grow by one pixel and
@@ -204,6 +220,7 @@ struct bvb_seg_avoid_params {
   int32_t go_rows;       /* forward when the centre columns' free space exceeds this */
   int32_t centre_lo, centre_hi; /* the centre columns [lo, hi) */
   int32_t queue_cap;     /* entries of the region growing queue (in work) */
+  int32_t light_jump_q8; /* a band mean that moved by more than this / 256 of itself: the light */
 };
 
 struct bvb_seg_avoid_state {
@@ -213,7 +230,8 @@ struct bvb_seg_avoid_state {
   int32_t changes;   /* sudden ground changes seen */
   int32_t lost;      /* consecutive frames without the ground */
   int32_t frame_mean; /* the previous frame's mean below the horizon */
-  int32_t pad[2];
+  int32_t light_q8;  /* the light relative to the first frame's, Q8 (256: the same) */
+  int32_t pad[1];
 };
 
 #define BVB_SEG_AVOID_STATE_BYTES ((int32_t)sizeof(struct bvb_seg_avoid_state))
@@ -222,6 +240,9 @@ struct bvb_seg_avoid_state {
 #define BVB_SEG_AVOID_WORK_BYTES(w, queue_cap) \
   (4 * (queue_cap) + BVB_SEG_AVOID_ROWS_BYTES(w) + BVB_MORPH3X3_SCRATCH_BYTES(w))
 #define BVB_SEG_AVOID_STAGES 6
+/* The light estimate's range, Q8: 1/8 to 4 times the first frame's light. */
+#define BVB_SEG_LIGHT_MIN_Q8 32
+#define BVB_SEG_LIGHT_MAX_Q8 1024
 
 #define BVB_SEG_FLAG_CHANGE 1
 #define BVB_SEG_FLAG_SEED_MOVED 2
