@@ -96,7 +96,8 @@ std::string first_difference(const std::vector<uint8_t> &expected, const std::ve
       break;
     }
   if (first == n) {
-    if (std::memcmp(expected.data(), actual.data(), expected.size()) == 0) return "";
+    // An empty buffer (no points) has null data(), which memcmp must not see.
+    if (expected.empty() || std::memcmp(expected.data(), actual.data(), expected.size()) == 0) return "";
     return "trailing bytes differ";
   }
   size_t ndiff = 0;
