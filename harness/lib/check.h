@@ -12,10 +12,26 @@
 #include <string>
 #include <vector>
 
-#include "rng.h"
 #include "target.h"
 
 namespace bvb {
+
+// splitmix64: small, fast, and the same sequence on every platform.
+class Rng {
+ public:
+  explicit Rng(uint64_t seed) : s_(seed) {}
+  uint64_t next() {
+    uint64_t z = (s_ += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  uint32_t u32() { return uint32_t(next() >> 32); }
+  int uniform(int lo, int hi) { return lo + int(next() % uint64_t(hi - lo + 1)); }  // [lo, hi]
+
+ private:
+  uint64_t s_;
+};
 
 // The host reference's view of a call's buffers (the same bytes the firmware gets).
 class HostBuffers {

@@ -106,7 +106,7 @@ void encoders_step(Encoders &e, const EncoderModel &m, const Step &step, uint64_
   const double travel[2] = {step.forward_in - half, step.forward_in + half};
   double *count[2] = {&e.left_count, &e.right_count};
   for (int w = 0; w < 2; ++w) {
-    Rng rng(hash_key(seed, uint64_t(w)));
+    SceneRng rng(hash_key(seed, uint64_t(w)));
     const double g1 = rng.gaussian(), g2 = rng.gaussian();
     double c = travel[w] * m.ticks_per_inch;
     if (m.slip > 0) c *= 1 + m.slip * std::fabs(g1);

@@ -394,7 +394,7 @@ RenderResult render(const World &world, const Pose &pose, const Camera &cam,
   }
 
   res.rgb = Image(W, H, 3);
-  Rng rng(opt.noise_seed);
+  SceneRng rng(opt.noise_seed);
   const bool noisy = opt.noise_sigma > 0;
   for (size_t i = 0; i < N * 3; ++i) {
     double v = opt.gain * col[i] + opt.offset;

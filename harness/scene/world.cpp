@@ -107,7 +107,7 @@ std::shared_ptr<const Texture> build_texture(uint64_t seed) {
   add_value_noise(base, n, n / 64, 0.50, hash_key(seed, 1));
   add_value_noise(base, n, n / 16, 0.35, hash_key(seed, 2));
   add_value_noise(base, n, n / 4, 0.25, hash_key(seed, 3));
-  Rng grain(hash_key(seed, 5));
+  SceneRng grain(hash_key(seed, 5));
   for (auto &v : base) v += float(0.3 * (2 * grain.uniform() - 1));
   double mean = 0, var = 0;
   for (float v : base) mean += v;
@@ -116,7 +116,7 @@ std::shared_ptr<const Texture> build_texture(uint64_t seed) {
   const double sd = std::sqrt(var / double(base.size()));
   for (auto &v : base) v = float(std::clamp((v - mean) * (0.4 / sd), -1.0, 1.0));
   // Scattered rotated squares of 0.3-1 in, light or dark: sharp corners for feature trackers.
-  Rng rng(hash_key(seed, 4));
+  SceneRng rng(hash_key(seed, 4));
   const int count = n * n / 120;
   for (int k = 0; k < count; ++k) {
     const double cx = rng.uniform() * n, cy = rng.uniform() * n;

@@ -1,7 +1,6 @@
-// Seeded random numbers, the same sequence on every platform: the checks' inputs and placements
-// (replayed by --seed) and the scene generator. Everything random in a scene (texture, sensor
-// noise, encoder slip and noise) is keyed by (seed, frame, purpose), so a frame's bytes depend
-// only on the spec and its index, never on the order frames are produced in.
+// Seeded random numbers for the scene generator. Everything random in a scene (texture, sensor
+// noise, encoder slip and noise) comes from here, keyed by (seed, frame, purpose), so a frame's
+// bytes depend only on the spec and its index, never on the order frames are produced in.
 // std::normal_distribution is avoided because its algorithm differs between C++ libraries.
 #pragma once
 
@@ -20,13 +19,12 @@ inline uint64_t hash_key(uint64_t a, uint64_t b, uint64_t c = 0, uint64_t d = 0)
   return mix64(mix64(mix64(mix64(a) ^ b) ^ c) ^ d);
 }
 
-// splitmix64 stream.
-struct Rng {
+// splitmix64 stream. Not the checks' Rng (harness/lib/check.h): the scenes' frames, and with
+// them the bundled scenes and every number measured on them, depend on this exact sequence.
+struct SceneRng {
   uint64_t state;
-  explicit Rng(uint64_t seed) : state(seed) {}
+  explicit SceneRng(uint64_t seed) : state(seed) {}
   uint64_t next() { return mix64(state += 0x9e3779b97f4a7c15ull); }
-  uint32_t u32() { return uint32_t(next() >> 32); }
-  int uniform(int lo, int hi) { return lo + int(next() % uint64_t(hi - lo + 1)); }  // [lo, hi]
   // Uniform in [0, 1) with 53 random bits.
   double uniform() { return double(next() >> 11) * (1.0 / 9007199254740992.0); }
   // Standard normal (Box-Muller, both values used).
