@@ -159,9 +159,12 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
       flags |= BVB_SEG_FLAG_SIDE;
     }
   }
+  /* The horizon row sees the floor only at infinity, beyond any wall: a region that reaches it
+   * in every centre column grew up a wall, and the path ahead is not known to be floor. */
+  if (ahead >= rows) flags |= BVB_SEG_FLAG_HORIZON;
   int32_t decision;
   if (first) state->stall = state->commit = state->last_turn = 0;
-  if (ahead > p->go_rows && !(flags & (BVB_SEG_FLAG_SIDE | BVB_SEG_FLAG_LOST))) {
+  if (ahead > p->go_rows && !(flags & (BVB_SEG_FLAG_SIDE | BVB_SEG_FLAG_LOST | BVB_SEG_FLAG_HORIZON))) {
     decision = BVB_PIPE_FORWARD;
   } else {
     if (first || !state->latch) state->latch = left > right ? BVB_PIPE_LEFT : BVB_PIPE_RIGHT;

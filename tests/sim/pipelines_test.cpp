@@ -169,6 +169,33 @@ TEST(SegAvoid, ClosedLoopStallAtAnUnseenWallEndsInATurn) {
   EXPECT_GE(forward, 1000 * 6 / 10);
 }
 
+// The cylinders arena with another floor texture (seed 3): from frame 809 the ground region
+// grows up the arena's wall, whose shading rises from the floor's level by steps smaller than
+// the tolerance, and the tracked ground follows it (from about 135 to 155 over some 25 frames).
+// The region then reaches the horizon row in every centre column: floor as far as infinity, so
+// not floor. Taken for a clear path, the robot drove into the wall at frame 826.
+TEST(SegAvoid, ClosedLoopRegionUpToTheHorizonIsNotAClearPath) {
+  SceneGenerator gen(parse_scene_spec("arena=cylinders,path=avoid,uyvy=0,flow=0,frames=900,texture_seed=3"));
+  PipelineRunOptions o;
+  o.impl = "host";
+  o.closed_loop = true;
+  Params params;
+  const PipelineRun run = run_pipeline(pipeline("seg_avoid"), nullptr, nullptr, &gen, params, o);
+  ASSERT_EQ(run.frames.size(), 900u);
+  EXPECT_EQ(run.collisions, 0);
+  int forward = 0, horizon = 0;
+  for (const auto &r : run.frames) {
+    const int flags = int(diag(r.out, "flags"));
+    if (flags & BVB_SEG_FLAG_HORIZON) {
+      ++horizon;
+      EXPECT_NE(r.out.decision, Drive::Forward) << "frame " << r.in.index;
+    }
+    forward += r.out.decision == Drive::Forward;
+  }
+  EXPECT_GT(horizon, 0);
+  EXPECT_GE(forward, 900 * 6 / 10);
+}
+
 // A region grown over something that is not floor (the robot's nose at a white wall) leaves the
 // rest of the frame as it was: the ground is lost, not re-seeded, and the robot turns.
 TEST(SegAvoid, WallAtTheRobotsFeetIsNotTakenForGround) {

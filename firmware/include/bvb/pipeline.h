@@ -78,7 +78,12 @@
  *   Stage 6, decision, the 30-pixel rule with left and right clearance:
  *     ahead = min free(x) over the centre columns [centre_lo, centre_hi);
  *     forward when ahead > go_rows and no side column is short (below) and the ground is not
- *       lost. go_rows is 30 at 120 rows; the harness scales it with the height (30 * height /
+ *       lost, and ahead < rows. ahead = rows says every centre column is floor up to the
+ *       horizon row, which sees the floor only at infinity (the harness's horizon is the row
+ *       at or just below the true horizon: its floor lies hundreds of inches away, beyond any
+ *       arena wall), so the region grew up a wall: the wall ahead is as bright as the tracked
+ *       ground, which followed the region up the wall's shading by steps each within ct
+ *       (flag BVB_SEG_FLAG_HORIZON; the robot turns as it does when blocked). go_rows is 30 at 120 rows; the harness scales it with the height (30 * height /
  *       120, the same floor distance at every resolution). With the scenes' camera (4 in high,
  *       tilted 10 deg down, 59.5 deg wide) the 30th row from the bottom sees the floor 10 in
  *       ahead of the camera, 7 in ahead of the robot's front; the scenes' truth calls the path
@@ -273,6 +278,7 @@ struct bvb_seg_avoid_state {
 #define BVB_SEG_FLAG_LOST 8
 #define BVB_SEG_FLAG_SIDE 16
 #define BVB_SEG_FLAG_STALL 32
+#define BVB_SEG_FLAG_HORIZON 64
 
 struct bvb_seg_avoid_kernels {
   int32_t (*region_grow)(const uint8_t *img, int32_t img_stride, uint8_t *mask, int32_t mask_stride,
