@@ -107,8 +107,9 @@
  *       |S - S'| <= (stall_q8 * w * rows) >> 8 (a band mean that moved by at most stall_q8 / 256
  *       of a grey level; the harness's default 0, an identical sum: on the scenes' floor one
  *       0.5 in step forward can move the mean by less than 1/8 of a level, so a bound of 1/8 took
- *       open floor for a stall (boxes, texture_seed=2, frame 11), and the sensor noise (noise=3 moves the mean by some 0.04
- *       levels) hides a stall from it). A frame that would go forward, whose previous
+ *       open floor for a stall (boxes, texture_seed=2, frame 11), and the sensor noise
+ *       (noise=3 moves the mean by some 0.04 levels) hides a stall from it). A frame that would
+ *       go forward, whose previous
  *       frame went forward and which is still, counts a still step (any other frame resets the
  *       count); at stall_frames still steps in a row the robot turns for stall_turn frames
  *       (flag BVB_SEG_FLAG_STALL on each), whatever the view says, in the direction of its last
