@@ -22,8 +22,8 @@ static int32_t scale_q8(int32_t v, int32_t light_q8) {
   return r > 255 ? 255 : r;
 }
 
-/* The mean intensity of the band (rounded down). */
-static int32_t band_mean(const uint8_t *band, int32_t width, int32_t rows, int32_t stride) {
+/* The sum of the band's intensities. */
+static int32_t band_sum(const uint8_t *band, int32_t width, int32_t rows, int32_t stride) {
   /* Packed rows (the camera's frames) are summed as one run: no per-row loop overhead. */
   const int32_t run = stride == width ? width * rows : width, runs = stride == width ? 1 : rows;
   int32_t sum = 0;
@@ -31,7 +31,7 @@ static int32_t band_mean(const uint8_t *band, int32_t width, int32_t rows, int32
     const uint8_t *r = band + y * stride;
     for (int32_t x = 0; x < run; ++x) sum += r[x];
   }
-  return sum / (width * rows);
+  return sum;
 }
 
 /* The free space a column needs for the robot to go on: go_rows in the centre columns, falling
@@ -69,7 +69,7 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
    * to the first frame's, scales the tolerances: the floor texture's spread and the
    * floor-to-wall contrast scale with it. It is measured only at such a jump, never from the
    * region, so a region grown up a wall cannot feed back into the tolerance. */
-  const int32_t fmean = band_mean(band, width, rows, stride);
+  const int32_t fsum = band_sum(band, width, rows, stride), fmean = fsum / (width * rows);
   const int32_t prev = state->frame_mean;
   int32_t light = first ? 256 : state->light_q8, ground_q8 = state->ground_q8, jump = 0;
   if (!first && prev > 0 && 256 * iabs(fmean - prev) > p->light_jump_q8 * prev) {
@@ -131,6 +131,10 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
   state->light_q8 = light;
   state->lost = lost;
   state->frame_mean = fmean;
+  /* The view did not change since the previous frame (see stage 6). */
+  const int32_t dsum = fsum - state->frame_sum;
+  const int32_t still = !first && iabs(dsum) <= (p->stall_q8 * width * rows) >> 8;
+  state->frame_sum = fsum;
   state->changes = (first ? 0 : state->changes) + ((flags & BVB_SEG_FLAG_CHANGE) != 0);
   state->frames = first ? 1 : state->frames + 1;
   if (++stage >= limit) goto stopped;
@@ -155,13 +159,40 @@ int32_t bvb_pipe_seg_avoid_run(const struct bvb_seg_avoid_kernels *k, const uint
       flags |= BVB_SEG_FLAG_SIDE;
     }
   }
+  /* The horizon row sees the floor only at infinity, beyond any wall: a region that reaches it
+   * in every centre column grew up a wall, and the path ahead is not known to be floor. */
+  if (ahead >= rows) flags |= BVB_SEG_FLAG_HORIZON;
   int32_t decision;
-  if (ahead > p->go_rows && !(flags & (BVB_SEG_FLAG_SIDE | BVB_SEG_FLAG_LOST))) {
+  if (first) state->stall = state->commit = state->last_turn = 0;
+  if (ahead > p->go_rows && !(flags & (BVB_SEG_FLAG_SIDE | BVB_SEG_FLAG_LOST | BVB_SEG_FLAG_HORIZON))) {
     decision = BVB_PIPE_FORWARD;
-    state->latch = 0;
   } else {
     if (first || !state->latch) state->latch = left > right ? BVB_PIPE_LEFT : BVB_PIPE_RIGHT;
     decision = state->latch;
+  }
+  /* A stall: forward steps that left the view as it was. The robot is pushing against
+   * something it cannot see (a wall beside its nose, outside the view). It turns for
+   * stall_turn frames, whatever the view says, on in the direction of its last turn: what it
+   * last turned away from left the view on the other side and is what it now touches. */
+  if (state->commit > 0) {
+    --state->commit;
+    decision = state->latch;
+    flags |= BVB_SEG_FLAG_STALL;
+  } else if (decision == BVB_PIPE_FORWARD) {
+    state->stall = !first && state->latch == 0 && still ? state->stall + 1 : 0;
+    if (state->stall >= p->stall_frames) {
+      state->stall = 0;
+      state->commit = p->stall_turn - 1;
+      decision = state->last_turn ? state->last_turn : left > right ? BVB_PIPE_LEFT : BVB_PIPE_RIGHT;
+      flags |= BVB_SEG_FLAG_STALL;
+    }
+  } else {
+    state->stall = 0;
+  }
+  if (decision == BVB_PIPE_FORWARD) {
+    state->latch = 0;
+  } else {
+    state->latch = state->last_turn = decision;
   }
   ++stage;
   out->decision = decision;

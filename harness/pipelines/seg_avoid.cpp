@@ -30,6 +30,9 @@ bvb_seg_avoid_params params_for(const FrameInput &in, Params &prm) {
   p.centre_hi = prm.get_int("centre_hi", w - w / 5, w / 2, w - 1);
   p.queue_cap = prm.get_int("queue_cap", 2 * (w + h), 1, w * h);
   p.light_jump_q8 = prm.get_int("light_jump_q8", 32, 0, 256);
+  p.stall_q8 = prm.get_int("stall_q8", 0, 0, 256);
+  p.stall_frames = prm.get_int("stall_frames", 3, 1, 1000000);
+  p.stall_turn = prm.get_int("stall_turn", 30, 1, 1000000);
   return p;
 }
 

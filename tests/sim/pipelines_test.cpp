@@ -142,6 +142,60 @@ TEST(SegAvoid, ClosedLoopThroughALightingStep) {
   }
 }
 
+// The boxes arena with another floor texture (seed 2): at frame 817 the robot, having turned in
+// place within an inch of a wall it can no longer see (the wall is beside its nose, outside the
+// view), drives into it. Pushing against the wall it sees the same frame again and again, every
+// forward step leaves the view as it was: without a stall detector it stays there, in contact,
+// for the rest of the run (1,000 frames). With it, it turns away after stall_frames still steps.
+TEST(SegAvoid, ClosedLoopStallAtAnUnseenWallEndsInATurn) {
+  SceneGenerator gen(parse_scene_spec("arena=boxes,path=avoid,uyvy=0,flow=0,frames=1000,texture_seed=2"));
+  PipelineRunOptions o;
+  o.impl = "host";
+  o.closed_loop = true;
+  Params params;
+  const PipelineRun run = run_pipeline(pipeline("seg_avoid"), nullptr, nullptr, &gen, params, o);
+  ASSERT_EQ(run.frames.size(), 1000u);
+  // The contact before the stall is seen cannot be avoided (the wall is not in the view); a
+  // stall detected within stall_frames steps keeps it to a few frames.
+  EXPECT_LE(run.collisions, 10);
+  int stalls = 0, forward = 0;
+  for (const auto &r : run.frames) {
+    const int flags = int(diag(r.out, "flags"));
+    stalls += (flags & BVB_SEG_FLAG_STALL) != 0;
+    if (flags & BVB_SEG_FLAG_STALL) EXPECT_NE(r.out.decision, Drive::Forward) << "frame " << r.in.index;
+    forward += r.out.decision == Drive::Forward;
+  }
+  EXPECT_GT(stalls, 0);
+  EXPECT_GE(forward, 1000 * 6 / 10);
+}
+
+// The cylinders arena with another floor texture (seed 3): from frame 809 the ground region
+// grows up the arena's wall, whose shading rises from the floor's level by steps smaller than
+// the tolerance, and the tracked ground follows it (from about 135 to 155 over some 25 frames).
+// The region then reaches the horizon row in every centre column: floor as far as infinity, so
+// not floor. Taken for a clear path, the robot drove into the wall at frame 826.
+TEST(SegAvoid, ClosedLoopRegionUpToTheHorizonIsNotAClearPath) {
+  SceneGenerator gen(parse_scene_spec("arena=cylinders,path=avoid,uyvy=0,flow=0,frames=900,texture_seed=3"));
+  PipelineRunOptions o;
+  o.impl = "host";
+  o.closed_loop = true;
+  Params params;
+  const PipelineRun run = run_pipeline(pipeline("seg_avoid"), nullptr, nullptr, &gen, params, o);
+  ASSERT_EQ(run.frames.size(), 900u);
+  EXPECT_EQ(run.collisions, 0);
+  int forward = 0, horizon = 0;
+  for (const auto &r : run.frames) {
+    const int flags = int(diag(r.out, "flags"));
+    if (flags & BVB_SEG_FLAG_HORIZON) {
+      ++horizon;
+      EXPECT_NE(r.out.decision, Drive::Forward) << "frame " << r.in.index;
+    }
+    forward += r.out.decision == Drive::Forward;
+  }
+  EXPECT_GT(horizon, 0);
+  EXPECT_GE(forward, 900 * 6 / 10);
+}
+
 // A region grown over something that is not floor (the robot's nose at a white wall) leaves the
 // rest of the frame as it was: the ground is lost, not re-seeded, and the robot turns.
 TEST(SegAvoid, WallAtTheRobotsFeetIsNotTakenForGround) {

@@ -78,7 +78,12 @@
  *   Stage 6, decision, the 30-pixel rule with left and right clearance:
  *     ahead = min free(x) over the centre columns [centre_lo, centre_hi);
  *     forward when ahead > go_rows and no side column is short (below) and the ground is not
- *       lost. go_rows is 30 at 120 rows; the harness scales it with the height (30 * height /
+ *       lost, and ahead < rows. ahead = rows says every centre column is floor up to the
+ *       horizon row, which sees the floor only at infinity (the harness's horizon is the row
+ *       at or just below the true horizon: its floor lies hundreds of inches away, beyond any
+ *       arena wall), so the region grew up a wall: the wall ahead is as bright as the tracked
+ *       ground, which followed the region up the wall's shading by steps each within ct
+ *       (flag BVB_SEG_FLAG_HORIZON; the robot turns as it does when blocked). go_rows is 30 at 120 rows; the harness scales it with the height (30 * height /
  *       120, the same floor distance at every resolution). With the scenes' camera (4 in high,
  *       tilted 10 deg down, 59.5 deg wide) the 30th row from the bottom sees the floor 10 in
  *       ahead of the camera, 7 in ahead of the robot's front; the scenes' truth calls the path
@@ -93,6 +98,24 @@
  *       x < width/2, right = sum over x >= width/2; left when left > right, else right. While
  *       the robot stays blocked the direction is latched (state), so it does not swing back
  *       and forth in front of an obstacle; the first forward decision releases the latch.
+ *     A stall: the robot can push against what it cannot see. The camera sees 30 deg either
+ *       side of the heading, and the robot's front corners lie some 45 deg off it, so a wall
+ *       that a turn in place swept out of the view's edge can be right beside the robot's nose;
+ *       driving on, it touches the wall and, still seeing open floor, keeps going forward
+ *       (the encoders tick even when the robot is blocked). What it does see is that the view
+ *       no longer changes. S = the band's sum, S' the previous frame's: a frame is still when
+ *       |S - S'| <= (stall_q8 * w * rows) >> 8 (a band mean that moved by at most stall_q8 / 256
+ *       of a grey level; the harness's default 0, an identical sum: on the scenes' floor one
+ *       0.5 in step forward can move the mean by less than 1/8 of a level, so a bound of 1/8 took
+ *       open floor for a stall (boxes, texture_seed=2, frame 11), and the sensor noise
+ *       (noise=3 moves the mean by some 0.04 levels) hides a stall from it). A frame that would
+ *       go forward, whose previous
+ *       frame went forward and which is still, counts a still step (any other frame resets the
+ *       count); at stall_frames still steps in a row the robot turns for stall_turn frames
+ *       (flag BVB_SEG_FLAG_STALL on each), whatever the view says, in the direction of its last
+ *       turn (the side with more clearance when it never turned): what it last turned away from
+ *       left the view on the other side, and it is what the robot now pushes against. The turn
+ *       latches that direction as any turn does.
  *   diag: [0] stages run, [1] ahead (px), [2] left clearance sum, [3] right clearance sum,
  *     [4] region pixels, [5] region mean m, [6] ground average G (Q8), [7] BVB_SEG_FLAG_* bits.
  *   Buffers: mask and map, width x rows bytes each (L1 data banks A and B at 160x120: 13.6 KB
@@ -221,6 +244,9 @@ struct bvb_seg_avoid_params {
   int32_t centre_lo, centre_hi; /* the centre columns [lo, hi) */
   int32_t queue_cap;     /* entries of the region growing queue (in work) */
   int32_t light_jump_q8; /* a band mean that moved by more than this / 256 of itself: the light */
+  int32_t stall_q8;      /* a band mean that moved by at most this / 256 grey levels: no motion */
+  int32_t stall_frames;  /* that many forward frames in a row without motion: a stall */
+  int32_t stall_turn;    /* frames of the turn after a stall */
 };
 
 struct bvb_seg_avoid_state {
@@ -231,7 +257,10 @@ struct bvb_seg_avoid_state {
   int32_t lost;      /* consecutive frames without the ground */
   int32_t frame_mean; /* the previous frame's mean below the horizon */
   int32_t light_q8;  /* the light relative to the first frame's, Q8 (256: the same) */
-  int32_t pad[1];
+  int32_t frame_sum; /* the previous frame's sum below the horizon */
+  int32_t stall;     /* forward frames in a row that left the view as it was */
+  int32_t commit;    /* frames left of a turn after a stall */
+  int32_t last_turn; /* the last turn decision (0: none yet) */
 };
 
 #define BVB_SEG_AVOID_STATE_BYTES ((int32_t)sizeof(struct bvb_seg_avoid_state))
@@ -249,6 +278,8 @@ struct bvb_seg_avoid_state {
 #define BVB_SEG_FLAG_DROPPED 4
 #define BVB_SEG_FLAG_LOST 8
 #define BVB_SEG_FLAG_SIDE 16
+#define BVB_SEG_FLAG_STALL 32
+#define BVB_SEG_FLAG_HORIZON 64
 
 struct bvb_seg_avoid_kernels {
   int32_t (*region_grow)(const uint8_t *img, int32_t img_stride, uint8_t *mask, int32_t mask_stride,
