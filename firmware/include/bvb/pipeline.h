@@ -83,8 +83,9 @@
  *       at or just below the true horizon: its floor lies hundreds of inches away, beyond any
  *       arena wall), so the region grew up a wall: the wall ahead is as bright as the tracked
  *       ground, which followed the region up the wall's shading by steps each within ct
- *       (flag BVB_SEG_FLAG_HORIZON; the robot turns as it does when blocked). go_rows is 30 at 120 rows; the harness scales it with the height (30 * height /
- *       120, the same floor distance at every resolution). With the scenes' camera (4 in high,
+ *       (flag BVB_SEG_FLAG_HORIZON; the robot turns as it does when blocked). go_rows is 30
+ *       at 120 rows; the harness scales it with the height (30 * height / 120, the same floor
+ *       distance at every resolution). With the scenes' camera (4 in high,
  *       tilted 10 deg down, 59.5 deg wide) the 30th row from the bottom sees the floor 10 in
  *       ahead of the camera, 7 in ahead of the robot's front; the scenes' truth calls the path
  *       blocked from 12 in, so between 12 and 7 in the rule still goes forward.
@@ -108,14 +109,13 @@
  *       of a grey level; the harness's default 0, an identical sum: on the scenes' floor one
  *       0.5 in step forward can move the mean by less than 1/8 of a level, so a bound of 1/8 took
  *       open floor for a stall (boxes, texture_seed=2, frame 11), and the sensor noise
- *       (noise=3 moves the mean by some 0.04 levels) hides a stall from it). A frame that would
- *       go forward, whose previous
- *       frame went forward and which is still, counts a still step (any other frame resets the
- *       count); at stall_frames still steps in a row the robot turns for stall_turn frames
- *       (flag BVB_SEG_FLAG_STALL on each), whatever the view says, in the direction of its last
- *       turn (the side with more clearance when it never turned): what it last turned away from
- *       left the view on the other side, and it is what the robot now pushes against. The turn
- *       latches that direction as any turn does.
+ *       (noise=3 moves the mean by some 0.04 levels) hides a stall from it). A frame that would go
+ *       forward, whose previous frame went forward and which is still, counts a still step (any
+ *       other frame resets the count); at stall_frames still steps in a row the robot turns for
+ *       stall_turn frames (flag BVB_SEG_FLAG_STALL on each), whatever the view says, in the
+ *       direction of its last turn (the side with more clearance when it never turned): what it
+ *       last turned away from left the view on the other side, and it is what the robot now pushes
+ *       against. The turn latches that direction as any turn does.
  *   diag: [0] stages run, [1] ahead (px), [2] left clearance sum, [3] right clearance sum,
  *     [4] region pixels, [5] region mean m, [6] ground average G (Q8), [7] BVB_SEG_FLAG_* bits.
  *   Buffers: mask and map, width x rows bytes each (L1 data banks A and B at 160x120: 13.6 KB
