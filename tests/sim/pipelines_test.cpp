@@ -35,11 +35,24 @@ PipelineRun host_run(const std::string &name, const std::string &scene, Params p
   return run_pipeline(pipeline(name), nullptr, &d, nullptr, params, o);
 }
 
-PipelineRun host_run_spec(const std::string &name, const std::string &spec, Params params = {}) {
+PipelineRun host_run_spec(const std::string &name, const std::string &spec, Params params = {},
+                          bool closed_loop = false) {
   SceneGenerator gen(parse_scene_spec(spec));
   PipelineRunOptions o;
   o.impl = "host";
+  o.closed_loop = closed_loop;
   return run_pipeline(pipeline(name), nullptr, nullptr, &gen, params, o);
+}
+
+// Closed loop on the host build (a few seconds for 2,000 frames): the decisions drive the robot.
+PipelineRun host_closed_loop(const std::string &name, const std::string &spec) {
+  return host_run_spec(name, spec, {}, true);
+}
+
+int forward_frames(const PipelineRun &run) {
+  int n = 0;
+  for (const auto &r : run.frames) n += r.out.decision == Drive::Forward;
+  return n;
 }
 
 // ---- segmentation: the 30-pixel rule against the scenes' truth ----
@@ -119,13 +132,8 @@ TEST(SegAvoid, ClosedLoopThroughALightingStep) {
   } cases[] = {{"boxes", "0.7"}, {"boxes", "1.3"}, {"corridor", "0.7"}};
   for (const auto &c : cases) {
     SCOPED_TRACE(std::string(c.arena) + " gain " + c.gain);
-    SceneGenerator gen(parse_scene_spec(std::string("arena=") + c.arena +
-                                        ",path=avoid,uyvy=0,flow=0,frames=600,light_step=200,step_gain=" + c.gain));
-    PipelineRunOptions o;
-    o.impl = "host";
-    o.closed_loop = true;
-    Params params;
-    const PipelineRun run = run_pipeline(pipeline("seg_avoid"), nullptr, nullptr, &gen, params, o);
+    const PipelineRun run = host_closed_loop("seg_avoid", std::string("arena=") + c.arena +
+                                             ",path=avoid,uyvy=0,flow=0,frames=600,light_step=200,step_gain=" + c.gain);
     ASSERT_EQ(run.frames.size(), 600u);
     EXPECT_EQ(run.collisions, 0);
     int before = 0, after = 0;
@@ -148,25 +156,22 @@ TEST(SegAvoid, ClosedLoopThroughALightingStep) {
 // forward step leaves the view as it was: without a stall detector it stays there, in contact,
 // for the rest of the run (1,000 frames). With it, it turns away after stall_frames still steps.
 TEST(SegAvoid, ClosedLoopStallAtAnUnseenWallEndsInATurn) {
-  SceneGenerator gen(parse_scene_spec("arena=boxes,path=avoid,uyvy=0,flow=0,frames=1000,texture_seed=2"));
-  PipelineRunOptions o;
-  o.impl = "host";
-  o.closed_loop = true;
-  Params params;
-  const PipelineRun run = run_pipeline(pipeline("seg_avoid"), nullptr, nullptr, &gen, params, o);
+  const PipelineRun run =
+      host_closed_loop("seg_avoid", "arena=boxes,path=avoid,uyvy=0,flow=0,frames=1000,texture_seed=2");
   ASSERT_EQ(run.frames.size(), 1000u);
   // The contact before the stall is seen cannot be avoided (the wall is not in the view); a
   // stall detected within stall_frames steps keeps it to a few frames.
   EXPECT_LE(run.collisions, 10);
-  int stalls = 0, forward = 0;
+  int stalls = 0;
   for (const auto &r : run.frames) {
     const int flags = int(diag(r.out, "flags"));
     stalls += (flags & BVB_SEG_FLAG_STALL) != 0;
-    if (flags & BVB_SEG_FLAG_STALL) EXPECT_NE(r.out.decision, Drive::Forward) << "frame " << r.in.index;
-    forward += r.out.decision == Drive::Forward;
+    if (flags & BVB_SEG_FLAG_STALL) {
+      EXPECT_NE(r.out.decision, Drive::Forward) << "frame " << r.in.index;
+    }
   }
   EXPECT_GT(stalls, 0);
-  EXPECT_GE(forward, 1000 * 6 / 10);
+  EXPECT_GE(forward_frames(run), 1000 * 6 / 10);
 }
 
 // The cylinders arena with another floor texture (seed 3): from frame 809 the ground region
@@ -175,25 +180,20 @@ TEST(SegAvoid, ClosedLoopStallAtAnUnseenWallEndsInATurn) {
 // The region then reaches the horizon row in every centre column: floor as far as infinity, so
 // not floor. Taken for a clear path, the robot drove into the wall at frame 826.
 TEST(SegAvoid, ClosedLoopRegionUpToTheHorizonIsNotAClearPath) {
-  SceneGenerator gen(parse_scene_spec("arena=cylinders,path=avoid,uyvy=0,flow=0,frames=900,texture_seed=3"));
-  PipelineRunOptions o;
-  o.impl = "host";
-  o.closed_loop = true;
-  Params params;
-  const PipelineRun run = run_pipeline(pipeline("seg_avoid"), nullptr, nullptr, &gen, params, o);
+  const PipelineRun run =
+      host_closed_loop("seg_avoid", "arena=cylinders,path=avoid,uyvy=0,flow=0,frames=900,texture_seed=3");
   ASSERT_EQ(run.frames.size(), 900u);
   EXPECT_EQ(run.collisions, 0);
-  int forward = 0, horizon = 0;
+  int horizon = 0;
   for (const auto &r : run.frames) {
     const int flags = int(diag(r.out, "flags"));
     if (flags & BVB_SEG_FLAG_HORIZON) {
       ++horizon;
       EXPECT_NE(r.out.decision, Drive::Forward) << "frame " << r.in.index;
     }
-    forward += r.out.decision == Drive::Forward;
   }
   EXPECT_GT(horizon, 0);
-  EXPECT_GE(forward, 900 * 6 / 10);
+  EXPECT_GE(forward_frames(run), 900 * 6 / 10);
 }
 
 // A region grown over something that is not floor (the robot's nose at a white wall) leaves the
@@ -272,28 +272,13 @@ TEST(FlowAvoid, LightingStepIsNotTakenForMotion) {
   }
 }
 
-// 2,000 frames in closed loop on the host build (a few seconds each), under the scene generator's
-// disturbances that used to end in a collision.
-PipelineRun host_closed_loop(const std::string &spec) {
-  SceneGenerator gen(parse_scene_spec(spec));
-  PipelineRunOptions o;
-  o.impl = "host";
-  o.closed_loop = true;
-  Params p;
-  return run_pipeline(pipeline("flow_avoid"), nullptr, nullptr, &gen, p, o);
-}
-
-int forward_frames(const PipelineRun &run) {
-  int n = 0;
-  for (const auto &r : run.frames) n += r.out.decision == Drive::Forward;
-  return n;
-}
-
+// 2,000 frames in closed loop under the scene generator's disturbances that used to end in a
+// collision.
 // Sensor noise gives every half a flow of its own (|u| + |v| 0.02-0.03 px), above a stall level
 // on |u| + |v| of 0.02 px: pushing against a box then read as a clear view, and the robot
 // pushed on for hundreds of frames. The expansion (signed) cancels the noise.
 TEST(FlowAvoid, NoisyViewStillSeesAStall) {
-  const PipelineRun run = host_closed_loop("arena=boxes,path=avoid,uyvy=0,flow=0,frames=2000,noise=3");
+  const PipelineRun run = host_closed_loop("flow_avoid", "arena=boxes,path=avoid,uyvy=0,flow=0,frames=2000,noise=3");
   ASSERT_EQ(run.frames.size(), 2000u);
   EXPECT_EQ(run.collisions, 0);
   EXPECT_GT(forward_frames(run), 2000 / 4);
@@ -303,7 +288,7 @@ TEST(FlowAvoid, NoisyViewStillSeesAStall) {
 // level a frame, read as motion by Horn-Schunck unless the gain is compensated: the robot turned
 // most of the time and still ran into the corridor's walls.
 TEST(FlowAvoid, FlickerIsNotTakenForMotion) {
-  const PipelineRun run = host_closed_loop("arena=corridor,path=avoid,uyvy=0,flow=0,frames=2000,flicker=0.1");
+  const PipelineRun run = host_closed_loop("flow_avoid", "arena=corridor,path=avoid,uyvy=0,flow=0,frames=2000,flicker=0.1");
   ASSERT_EQ(run.frames.size(), 2000u);
   EXPECT_EQ(run.collisions, 0);
   EXPECT_GT(forward_frames(run), 2000 / 3);
@@ -365,9 +350,7 @@ void expect_safe(const PipelineRun &run, int frames) {
   EXPECT_EQ(run.collisions, 0);
   EXPECT_TRUE(run.mismatches.empty()) << run.mismatches.front();
   // It drives, not only turns: at least a quarter of the frames go forward.
-  int forward = 0;
-  for (const auto &r : run.frames) forward += r.out.decision == Drive::Forward;
-  EXPECT_GT(forward, frames / 4);
+  EXPECT_GT(forward_frames(run), frames / 4);
 }
 
 class ClosedLoop : public testing::TestWithParam<Loop> {};
