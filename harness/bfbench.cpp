@@ -41,7 +41,7 @@ const char *kMainHelp =
     "commands:\n"
     "  list                     kernels and their implementations\n"
     "  check                    C reference (host and Blackfin) vs assembly, bit for bit\n"
-    "  bench                    simulator cycles per call and per pixel, C vs assembly\n"
+    "  bench                    modelled BF537 cycles per call and per pixel, C vs assembly\n"
     "  run KERNEL               one kernel on given frames\n"
     "  budgets                  compare the bench with ci/budgets.json\n";
 const char *kMainHelpTail =
@@ -90,6 +90,15 @@ class Args {
     auto v = values(name, alias);
     if (v.size() > 1) throw Usage(name + " given more than once");
     return v.empty() ? fallback : v[0];
+  }
+  // The values of an option, without taking them.
+  std::vector<std::string> values_peek(const std::string &name) const {
+    std::vector<std::string> out;
+    for (size_t i = 0; i < a_.size(); ++i) {
+      if (a_[i] == name && i + 1 < a_.size()) out.push_back(a_[i + 1]);
+      else if (a_[i].rfind(name + "=", 0) == 0) out.push_back(a_[i].substr(name.size() + 1));
+    }
+    return out;
   }
   std::vector<std::string> positional() {
     std::vector<std::string> out;
@@ -141,7 +150,13 @@ Target make_target(Args &args, bool selftest = false) {
   FirmwareImage fw = selftest ? selftest_firmware() : product_firmware();
   std::string elf = args.value("--firmware", "");
   if (!elf.empty()) fw.elf = elf;
-  return Target(fw, default_simulator());
+  Target t(fw, default_simulator());
+  std::string timing = args.value("--timing", "");
+  if (!timing.empty()) {
+    if (!valid_timing(timing)) throw Usage("--timing wants none or bf537, got '" + timing + "'");
+    t.set_timing(timing);
+  }
+  return t;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -178,7 +193,7 @@ void print_check_report(const Checker &ck, size_t max_per_kernel) {
 int cmd_check(Args &args) {
   if (help_requested(args,
                      "usage: bfbench check [-k GLOB] [--seed N] [--seeds COUNT] [-j N] [--campaign]\n"
-                     "                     [--firmware ELF] [-v]\n\n"
+                     "                     [--timing none|bf537] [--firmware ELF] [-v]\n\n"
                      "Runs every kernel's C reference on the Blackfin and its assembly in the simulator\n"
                      "on seeded random, crafted and real frames over many sizes, and compares both with\n"
                      "the host-compiled C reference, bit for bit; guard bands, callee-saved registers,\n"
@@ -242,11 +257,16 @@ std::vector<Size> parse_sizes(Args &args) {
 int cmd_bench(Args &args) {
   if (help_requested(args,
                      "usage: bfbench bench [-k GLOB] [--size WxH]... [--json FILE] [--csv FILE]\n"
-                     "                     [--markdown FILE] [--asm-only] [-j N] [--firmware ELF]\n\n"
-                     "Simulator cycles per call and per pixel for each kernel's C reference built for\n"
-                     "the Blackfin and for its assembly, the empty-call overhead measured and\n"
-                     "subtracted, the speed-up, and the kernel's stated lower bound. Sizes default to\n"
-                     "160x120, 320x240 and 640x480. Every measured call is also checked.\n"))
+                     "                     [--markdown FILE] [--asm-only] [--timing none|bf537] [--no-sim]\n"
+                     "                     [-j N] [--firmware ELF]\n\n"
+                     "Cycles per call and per pixel for each kernel's C reference built for the\n"
+                     "Blackfin and for its assembly, the empty-call overhead measured and subtracted,\n"
+                     "the speed-up, and the kernel's stated lower bound. Cycles are modelled BF537\n"
+                     "cycles (bfin-elf-run --timing bf537: pipeline stalls, L1 banks, SDRAM, caches);\n"
+                     "each call also runs under --timing none and the simulator's own count is shown\n"
+                     "beside the model's (--no-sim skips that run), with where the buffers were\n"
+                     "placed. Sizes default to 160x120, 320x240 and 640x480. Every measured call is\n"
+                     "also checked. $BFBENCH_TIMING sets the default model.\n"))
     return 0;
   BenchOptions opts;
   opts.kernel_glob = args.value("-k", "*", "--kernel");
@@ -255,6 +275,7 @@ int cmd_bench(Args &args) {
   std::string json_path = args.value("--json", ""), csv_path = args.value("--csv", ""),
               md_path = args.value("--markdown", "");
   opts.run_c = !args.flag("--asm-only");
+  opts.compare_sim = !args.flag("--no-sim");
   opts.jobs = int(to_long(args.value("-j", std::to_string(default_jobs())), "-j", 1, 256));
   opts.progress = isatty(2);
   Target target = make_target(args);
@@ -282,10 +303,11 @@ int cmd_bench(Args &args) {
 int cmd_run(Args &args) {
   if (help_requested(args,
                      "usage: bfbench run KERNEL --in FILE [--in FILE] --out FILE [--impl asm|c|host]\n"
-                     "                  [--param K=V]... [--size WxH] [--firmware ELF]\n\n"
+                     "                  [--param K=V]... [--size WxH] [--timing none|bf537] [--firmware ELF]\n\n"
                      "Runs one kernel on the given frames (binary or ASCII PGM/PPM, or raw UYVY with\n"
-                     "--size) and writes its output; prints the simulator cycles of the call. --impl defaults\n"
-                     "to asm, or c for kernels without assembly.\n"))
+                     "--size) and writes its output; prints the cycles of the call (modelled BF537 cycles, or\n"
+                     "the simulator's own with --timing none). --impl defaults to asm, or c for kernels\n"
+                     "without assembly.\n"))
     return 0;
   RunRequest req;
   req.inputs = args.values("--in");
@@ -296,6 +318,8 @@ int cmd_run(Args &args) {
   if (sizes.size() > 1) throw Usage("--size given more than once");
   if (!sizes.empty()) req.raw_width = sizes[0].w, req.raw_height = sizes[0].h;
   std::string elf = args.value("--firmware", "");
+  std::string timing = args.value("--timing", "");
+  if (!timing.empty() && !valid_timing(timing)) throw Usage("--timing wants none or bf537, got '" + timing + "'");
   auto pos = args.positional();
   if (pos.size() != 1) throw Usage("run takes one KERNEL (bfbench list)");
   req.kernel = pos[0];
@@ -322,6 +346,7 @@ int cmd_run(Args &args) {
   FirmwareImage fw = product_firmware();
   if (!elf.empty()) fw.elf = elf;
   Target target(fw, default_simulator());
+  if (!timing.empty()) target.set_timing(timing);
   Call call;
   call.kernel = k.index;
   call.impl = parse_impl(impl);
@@ -343,14 +368,17 @@ int cmd_run(Args &args) {
 
 int cmd_budgets(Args &args) {
   if (help_requested(args,
-                     "usage: bfbench budgets [--update] [--file FILE] [-k GLOB] [-j N]\n\n"
+                     "usage: bfbench budgets [--update] [--file FILE] [-k GLOB] [-j N] [--timing none|bf537]\n\n"
                      "Measures every assembly kernel at the sizes its budgets name (and at 160x120,\n"
                      "320x240, 640x480 for kernels without one) and compares with the budgets file\n"
                      "(default ci/budgets.json). Fails when a kernel exceeds its budget, has none, or\n"
                      "a budget names nothing measured. --update rewrites the file atomically with the\n"
-                     "measured cycles and prints old -> new for every entry.\n"))
+                     "measured cycles and prints old -> new for every entry. Budgets are judged under the\n"
+                     "timing model the file names (its \"timing\"; none when absent); --update --timing T\n"
+                     "re-measures the file in model T.\n"))
     return 0;
   const bool update = args.flag("--update");
+  const bool timing_given = !args.values_peek("--timing").empty();
   std::string path = args.value("--file", BVB_SOURCE_DIR "/ci/budgets.json");
   BenchOptions opts;
   opts.kernel_glob = args.value("-k", "*", "--kernel");
@@ -361,7 +389,13 @@ int cmd_budgets(Args &args) {
   args.positional();
   std::vector<Budget> budgets;
   bool exists = access(path.c_str(), F_OK) == 0;
-  if (exists || !update) budgets = load_budgets(path);
+  std::string file_timing = target.timing();
+  if (exists || !update) budgets = load_budgets(path, &file_timing);
+  // Budgets are judged under the model they were measured in; --update --timing T re-measures
+  // the whole file in T.
+  if (update && timing_given) file_timing = target.timing();
+  else target.set_timing(file_timing);
+  opts.compare_sim = false;
   for (Size s : budget_sizes(budgets)) {
     bool have = false;
     for (Size t : opts.sizes) have |= t.w == s.w && t.h == s.h;
@@ -395,7 +429,13 @@ int cmd_budgets(Args &args) {
         std::printf("%-40s %llu -> %llu%s\n", v.key.c_str(), (unsigned long long)v.budget,
                     (unsigned long long)v.measured, v.budget == v.measured ? "" : "  (changed)");
     }
-    save_budgets(path, next);
+    if (timing_given && !others.empty() && exists) {
+      std::string old_timing;
+      load_budgets(path, &old_timing);
+      if (old_timing != file_timing)
+        throw Usage("--update --timing " + file_timing + " with -k would mix models in one file: update all kernels");
+    }
+    save_budgets(path, next, file_timing);
     std::printf("wrote %s\n", path.c_str());
     for (const auto &v : verdicts)
       if (v.status == BudgetVerdict::Failed) return 1;

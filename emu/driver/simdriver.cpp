@@ -39,6 +39,7 @@ std::vector<std::string> command_line(const RunSpec &spec) {
     args.push_back("--memory-region");
     args.push_back(hex(m.address) + "," + hex(m.size));
   }
+  for (const auto &o : spec.options) args.push_back(o);
   args.push_back(spec.elf);
   return args;
 }

@@ -25,6 +25,8 @@ struct RunSpec {
   std::string simulator;  // path of bfin-elf-run
   std::string elf;
   std::vector<MappedFile> maps;
+  // Further simulator options, before the ELF (e.g. "--timing", "bf537").
+  std::vector<std::string> options;
   // Backstop only: firmware enforces cycle limits itself; this catches a simulator that never
   // returns (e.g. a kernel that masked the watchdog). Never a measurement.
   double wall_timeout_s = 600;

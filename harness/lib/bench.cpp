@@ -22,6 +22,7 @@ std::vector<BenchRow> run_bench(const Target &target, const BenchOptions &opts) 
   Checker ck(target, co);
   std::vector<BenchRow> rows;
   std::vector<CheckCall> calls;
+  const bool compare = opts.compare_sim && target.timing() != "none";
   for (const Family *f : families()) {
     if (!f->bench_call) continue;
     for (const auto &k : f->kernels) {
@@ -36,11 +37,16 @@ std::vector<BenchRow> run_bench(const Target &target, const BenchOptions &opts) 
         r.case_name = c.case_name;
         r.pixels = c.pixels;
         r.lower_bound = f->lower_bound ? f->lower_bound(k, s.w, s.h) : 0;
+        r.timing = target.timing();
+        r.placement = placement_of(c.bufs);
         rows.push_back(r);
         calls.push_back(std::move(c));
       }
     }
   }
+  // The same calls without the timing model, for the simulator's own count beside the model's.
+  std::vector<CheckCall> sim_calls;
+  if (compare) sim_calls = calls;
   // The bench checks what it measures: a wrong answer is not a fast one.
   for (size_t i = 0; i < calls.size(); ++i) {
     BenchRow *row = &rows[i];
@@ -50,11 +56,51 @@ std::vector<BenchRow> run_bench(const Target &target, const BenchOptions &opts) 
     });
   }
   ck.flush();
-  for (const auto &f : ck.failures())
+  std::vector<Failure> failures = ck.failures();
+  if (compare) {
+    Target plain = target;
+    plain.set_timing("none");
+    Checker sk(plain, co);
+    for (size_t i = 0; i < sim_calls.size(); ++i) {
+      BenchRow *row = &rows[i];
+      sk.add(std::move(sim_calls[i]), [row](uint32_t impl, const CallResult &r) {
+        row->has_sim = true;
+        if (impl == BVB_IMPL_C) row->c_sim = r.cycles;
+        else row->asm_sim = r.cycles;
+      });
+    }
+    sk.flush();
+    for (auto f : sk.failures()) {
+      f.impl += " (timing none)";
+      failures.push_back(f);
+    }
+  }
+  for (const auto &f : failures)
     for (auto &r : rows)
       if (r.kernel == f.kernel && r.case_name == f.case_name && r.error.empty())
         r.error = f.impl + ": " + failure_kind_name(f.kind) + ": " + f.message;
   return rows;
+}
+
+const char *place_name(uint32_t place) {
+  switch (place) {
+    case BVB_PLACE_SDRAM: return "SDRAM";
+    case BVB_PLACE_L1A: return "L1A";
+    case BVB_PLACE_L1B: return "L1B";
+    case BVB_PLACE_SCRATCH: return "scratch";
+    case BVB_PLACE_WINDOW: return "window";
+  }
+  return "?";
+}
+
+std::string placement_of(const std::vector<Buffer> &bufs) {
+  bool same = true;
+  for (const auto &b : bufs) same &= b.place == bufs.front().place;
+  if (bufs.empty()) return "-";
+  if (same) return place_name(bufs.front().place);
+  std::string s;
+  for (const auto &b : bufs) s += (s.empty() ? "" : " ") + b.name + ":" + place_name(b.place);
+  return s;
 }
 
 namespace {
@@ -73,39 +119,60 @@ std::string group(uint64_t v) {
 }
 }  // namespace
 
+namespace {
+std::string ratio(uint32_t model, uint32_t sim) { return sim ? fmt("%.2f", double(model) / sim) : "-"; }
+const char *units(const std::string &timing) {
+  return timing == "none" ? "simulator cycles (--timing none: no stalls, no memory latency)"
+                          : "modelled BF537 cycles (--timing bf537)";
+}
+}  // namespace
+
 std::string bench_table(const std::vector<BenchRow> &rows, uint32_t null_call) {
   std::ostringstream o;
-  char line[512];
-  std::snprintf(line, sizeof line, "%-22s %-10s %14s %9s %14s %9s %8s %9s %8s\n", "kernel", "case",
-                "C cycles", "C c/px", "asm cycles", "asm c/px", "speed-up", "bound c/px", "asm/bound");
+  char line[768];
+  const char *head = "%-20s %-8s %13s %13s %9s %8s %9s %8s %13s %8s  %s\n";
+  std::snprintf(line, sizeof line, head, "kernel", "case", "C cycles", "asm cycles", "asm c/px",
+                "speed-up", "bound c/px", "asm/bound", "asm sim", "mod/sim", "placement");
   o << line;
+  bool any_sim = false;
   for (const auto &r : rows) {
     const double px = r.pixels > 0 ? r.pixels : 1;
-    std::string c = r.has_c ? group(r.c_cycles) : "-", cpp = r.has_c ? fmt("%.2f", r.c_cycles / px) : "-";
+    std::string c = r.has_c ? group(r.c_cycles) : "-";
     std::string a = r.has_asm ? group(r.asm_cycles) : "-", app = r.has_asm ? fmt("%.2f", r.asm_cycles / px) : "-";
     std::string sp = r.has_c && r.has_asm && r.asm_cycles ? fmt("%.1fx", double(r.c_cycles) / r.asm_cycles) : "-";
     std::string lb = r.lower_bound > 0 ? fmt("%.2f", r.lower_bound / px) : "-";
     std::string eff = r.lower_bound > 0 && r.has_asm ? fmt("%.2f", r.asm_cycles / r.lower_bound) : "-";
-    std::snprintf(line, sizeof line, "%-22s %-10s %14s %9s %14s %9s %8s %9s %8s\n", r.kernel.c_str(),
-                  r.case_name.c_str(), c.c_str(), cpp.c_str(), a.c_str(), app.c_str(), sp.c_str(),
-                  lb.c_str(), eff.c_str());
+    std::string as = r.has_sim && r.has_asm ? group(r.asm_sim) : "-";
+    std::string rt = r.has_sim && r.has_asm ? ratio(r.asm_cycles, r.asm_sim)
+                     : r.has_sim && r.has_c ? ratio(r.c_cycles, r.c_sim) : "-";
+    any_sim |= r.has_sim;
+    std::snprintf(line, sizeof line, head, r.kernel.c_str(), r.case_name.c_str(), c.c_str(), a.c_str(),
+                  app.c_str(), sp.c_str(), lb.c_str(), eff.c_str(), as.c_str(), rt.c_str(), r.placement.c_str());
     o << line;
     if (!r.error.empty()) o << "  FAILED: " << r.error << "\n";
   }
-  o << "cycles are simulator cycles per call with the empty-call overhead (" << null_call
-    << " cycles) subtracted\n";
+  const std::string timing = rows.empty() ? "bf537" : rows.front().timing;
+  o << "C and asm cycles are " << units(timing) << " per call, the empty call's " << null_call
+    << " cycles subtracted\n";
+  if (any_sim)
+    o << "asm sim: the simulator's own count of the same call (--timing none); mod/sim: modelled / sim\n";
   return o.str();
 }
 
 std::string bench_json(const std::vector<BenchRow> &rows, uint32_t null_call) {
   std::ostringstream o;
-  o << "{\n  \"null_call_cycles\": " << null_call << ",\n  \"rows\": [";
+  const std::string timing = rows.empty() ? "bf537" : rows.front().timing;
+  o << "{\n  \"timing\": " << json::quote(timing) << ",\n  \"units\": " << json::quote(units(timing))
+    << ",\n  \"null_call_cycles\": " << null_call << ",\n  \"rows\": [";
   for (size_t i = 0; i < rows.size(); ++i) {
     const auto &r = rows[i];
     o << (i ? ",\n" : "\n") << "    {\"kernel\": " << json::quote(r.kernel)
-      << ", \"case\": " << json::quote(r.case_name) << ", \"pixels\": " << r.pixels;
+      << ", \"case\": " << json::quote(r.case_name) << ", \"pixels\": " << r.pixels
+      << ", \"placement\": " << json::quote(r.placement);
     if (r.has_c) o << ", \"c_cycles\": " << r.c_cycles;
     if (r.has_asm) o << ", \"asm_cycles\": " << r.asm_cycles;
+    if (r.has_sim && r.has_c) o << ", \"c_sim_cycles\": " << r.c_sim;
+    if (r.has_sim && r.has_asm) o << ", \"asm_sim_cycles\": " << r.asm_sim;
     if (r.lower_bound > 0) o << ", \"lower_bound\": " << r.lower_bound;
     if (!r.error.empty()) o << ", \"error\": " << json::quote(r.error);
     o << "}";
@@ -116,13 +183,17 @@ std::string bench_json(const std::vector<BenchRow> &rows, uint32_t null_call) {
 
 std::string bench_csv(const std::vector<BenchRow> &rows) {
   std::ostringstream o;
-  o << "kernel,case,pixels,c_cycles,asm_cycles,lower_bound,error\n";
+  o << "kernel,case,pixels,timing,c_cycles,asm_cycles,c_sim_cycles,asm_sim_cycles,lower_bound,placement,error\n";
   for (const auto &r : rows) {
-    o << r.kernel << "," << r.case_name << "," << r.pixels << ",";
+    o << r.kernel << "," << r.case_name << "," << r.pixels << "," << r.timing << ",";
     if (r.has_c) o << r.c_cycles;
     o << ",";
     if (r.has_asm) o << r.asm_cycles;
-    o << "," << (r.lower_bound > 0 ? std::to_string(r.lower_bound) : "") << ","
+    o << ",";
+    if (r.has_sim && r.has_c) o << r.c_sim;
+    o << ",";
+    if (r.has_sim && r.has_asm) o << r.asm_sim;
+    o << "," << (r.lower_bound > 0 ? std::to_string(r.lower_bound) : "") << "," << r.placement << ","
       << (r.error.empty() ? "" : "\"failed\"") << "\n";
   }
   return o.str();
@@ -130,24 +201,34 @@ std::string bench_csv(const std::vector<BenchRow> &rows) {
 
 std::string bench_markdown(const std::vector<BenchRow> &rows) {
   std::ostringstream o;
-  o << "| kernel | case | C cycles | asm cycles | speed-up | C c/px | asm c/px | bound c/px |\n"
-       "|---|---|---:|---:|---:|---:|---:|---:|\n";
+  o << "| kernel | case | C cycles | asm cycles | speed-up | C c/px | asm c/px | bound c/px | C sim | asm sim | "
+       "asm model/sim | placement |\n"
+       "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
   for (const auto &r : rows) {
     const double px = r.pixels > 0 ? r.pixels : 1;
     o << "| " << r.kernel << " | " << r.case_name << " | " << (r.has_c ? group(r.c_cycles) : "-") << " | "
       << (r.has_asm ? group(r.asm_cycles) : "-") << " | "
       << (r.has_c && r.has_asm && r.asm_cycles ? fmt("%.1fx", double(r.c_cycles) / r.asm_cycles) : "-") << " | "
       << (r.has_c ? fmt("%.2f", r.c_cycles / px) : "-") << " | " << (r.has_asm ? fmt("%.2f", r.asm_cycles / px) : "-")
-      << " | " << (r.lower_bound > 0 ? fmt("%.2f", r.lower_bound / px) : "-") << " |\n";
+      << " | " << (r.lower_bound > 0 ? fmt("%.2f", r.lower_bound / px) : "-") << " | "
+      << (r.has_sim && r.has_c ? group(r.c_sim) : "-") << " | " << (r.has_sim && r.has_asm ? group(r.asm_sim) : "-")
+      << " | " << (r.has_sim && r.has_asm ? ratio(r.asm_cycles, r.asm_sim) : "-") << " | " << r.placement << " |\n";
   }
   return o.str();
 }
 
-std::vector<Budget> load_budgets(const std::string &path) {
+std::vector<Budget> load_budgets(const std::string &path, std::string *timing) {
   auto bytes = read_file(path);
   json::Value v = json::parse(std::string(bytes.begin(), bytes.end()), path);
   const json::Value *b = v.type == json::Value::Object ? v.get("budgets") : nullptr;
   if (!b || b->type != json::Value::Object) throw InputError(path + ": no \"budgets\" object");
+  std::string t = "none";
+  if (const json::Value *tv = v.get("timing")) {
+    if (tv->type != json::Value::String || !valid_timing(tv->str))
+      throw InputError(path + ": \"timing\" must be \"none\" or \"bf537\"");
+    t = tv->str;
+  }
+  if (timing) *timing = t;
   std::vector<Budget> out;
   for (const auto &kv : b->obj) {
     const json::Value *c = kv.second.get("cycles");
@@ -166,12 +247,13 @@ std::vector<Budget> load_budgets(const std::string &path) {
   return out;
 }
 
-void save_budgets(const std::string &path, const std::vector<Budget> &budgets) {
+void save_budgets(const std::string &path, const std::vector<Budget> &budgets, const std::string &timing) {
   std::vector<Budget> sorted = budgets;
   std::sort(sorted.begin(), sorted.end(), [](const Budget &a, const Budget &b) { return a.key < b.key; });
   std::ostringstream o;
-  o << "{\n  \"chip\": \"bf537\",\n  \"units\": \"simulator cycles per call, empty-call overhead "
-       "subtracted\",\n  \"budgets\": {";
+  o << "{\n  \"chip\": \"bf537\",\n  \"timing\": " << json::quote(timing) << ",\n  \"units\": "
+    << json::quote(std::string(units(timing)) + " per call, empty-call overhead subtracted, buffers where the bench places them")
+    << ",\n  \"budgets\": {";
   for (size_t i = 0; i < sorted.size(); ++i) {
     o << (i ? ",\n" : "\n") << "    " << json::quote(sorted[i].key) << ": {\"cycles\": " << sorted[i].cycles;
     if (sorted[i].tolerance_pct > 0) o << ", \"tolerance_pct\": " << sorted[i].tolerance_pct;

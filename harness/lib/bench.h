@@ -16,7 +16,12 @@ struct BenchRow {
   std::string case_name;  // e.g. "160x120"
   double pixels = 0;
   bool has_c = false, has_asm = false;
-  uint32_t c_cycles = 0, asm_cycles = 0;
+  uint32_t c_cycles = 0, asm_cycles = 0;  // under the target's timing model (modelled cycles)
+  // The same calls under --timing none (the simulator's own count), when the bench compared.
+  bool has_sim = false;
+  uint32_t c_sim = 0, asm_sim = 0;
+  std::string timing;     // the model c_cycles and asm_cycles are in: "bf537" or "none"
+  std::string placement;  // where the buffers were: "SDRAM", or "src:SDRAM dst:L1A ..."
   double lower_bound = 0;  // cycles; 0 when the kernel states none
   std::string error;       // the kernel failed its check during the bench
   std::string key(const char *impl) const { return kernel + "/" + impl + "/" + case_name; }
@@ -29,7 +34,14 @@ struct BenchOptions {
   int jobs = 1;
   uint32_t seed = 1;
   bool progress = false;
+  // Also run every call under --timing none and report both counts (when the target models).
+  bool compare_sim = true;
 };
+
+// Where a place is: "SDRAM", "L1A", "L1B", "scratch", "window".
+const char *place_name(uint32_t place);
+// Every buffer's place: the one name when all agree, else "name:PLACE ...".
+std::string placement_of(const std::vector<Buffer> &bufs);
 
 std::vector<BenchRow> run_bench(const Target &target, const BenchOptions &opts);
 std::string bench_table(const std::vector<BenchRow> &rows, uint32_t null_call_cycles);
@@ -44,8 +56,10 @@ struct Budget {
   double tolerance_pct = 0;  // allowed excess; 0 = exact
 };
 
-std::vector<Budget> load_budgets(const std::string &path);
-void save_budgets(const std::string &path, const std::vector<Budget> &budgets);
+// The file's "timing" (the model its cycles are in) goes to *timing: "none" when the file
+// names none (budgets from before the timing model were the simulator's own counts).
+std::vector<Budget> load_budgets(const std::string &path, std::string *timing = nullptr);
+void save_budgets(const std::string &path, const std::vector<Budget> &budgets, const std::string &timing);
 
 struct BudgetVerdict {
   std::string key;

@@ -223,7 +223,12 @@ std::string make_temp_file() {
 }  // namespace
 
 Target::Target(FirmwareImage image, std::string simulator)
-    : image_(std::move(image)), simulator_(std::move(simulator)) {}
+    : image_(std::move(image)), simulator_(std::move(simulator)), timing_(default_timing()) {}
+
+void Target::set_timing(const std::string &t) {
+  if (!valid_timing(t)) throw InputError("timing model '" + t + "' unknown (none or bf537)");
+  timing_ = t;
+}
 
 uint32_t Target::arena_bytes(uint32_t place) const {
   static const char *names[][2] = {{"_sdram_arena_start", "_sdram_arena_end"},
@@ -257,6 +262,7 @@ void Target::run_window(const std::vector<const Call *> &calls,
   } cleanup{path};
   sim::RunSpec spec;
   spec.simulator = simulator_;
+  spec.options = {"--timing", timing_};
   spec.elf = image_.elf;
   spec.maps.push_back({path, BVB_WINDOW_ADDR, l.size});
   // A generous floor for slow machines: the simulator runs well over 5 M cycles per second.
@@ -408,6 +414,7 @@ struct Session::Impl {
     encode_call(c, layout.offsets[0], 0, win, true);
     sim::RunSpec spec;
     spec.simulator = target.simulator();
+    spec.options = {"--timing", target.timing()};
     spec.elf = target.elf();
     spec.maps.push_back({path, BVB_WINDOW_ADDR, layout.size});
     proc = std::make_unique<sim::Process>(spec);
@@ -476,5 +483,15 @@ FirmwareImage selftest_firmware() {
 }
 
 std::string default_simulator() { return sim::find_simulator(BVB_DEFAULT_SIMULATOR); }
+
+bool valid_timing(const std::string &t) { return t == "none" || t == "bf537"; }
+
+std::string default_timing() {
+  const char *env = std::getenv("BFBENCH_TIMING");
+  if (!env || !*env) return "bf537";
+  if (!valid_timing(env))
+    throw InputError(std::string("BFBENCH_TIMING='") + env + "' is not a timing model (none or bf537)");
+  return env;
+}
 
 }  // namespace bvb

@@ -103,6 +103,10 @@ class Target {
   // Bytes the firmware has for buffers placed in `place` (from the image's linker symbols).
   uint32_t arena_bytes(uint32_t place) const;
   uint32_t null_call_cycles() const { return null_call_cycles_; }
+  // The simulator's timing model: "bf537" (modelled BF537 cycles: stalls, L1 banks, SDRAM,
+  // caches) or "none" (the simulator's own counts: one per instruction, fixed extras).
+  const std::string &timing() const { return timing_; }
+  void set_timing(const std::string &t);
   static constexpr uint32_t kDefaultCycleLimit = 300000000;
 
  private:
@@ -110,6 +114,7 @@ class Target {
 
   FirmwareImage image_;
   std::string simulator_;
+  std::string timing_;
   mutable uint32_t null_call_cycles_ = 0;
 };
 
@@ -135,5 +140,8 @@ class Session {
 FirmwareImage product_firmware();
 FirmwareImage selftest_firmware();
 std::string default_simulator();
+// $BFBENCH_TIMING if set (none or bf537), else "bf537": budgets and reports are modelled cycles.
+std::string default_timing();
+bool valid_timing(const std::string &t);
 
 }  // namespace bvb
