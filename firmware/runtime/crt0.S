@@ -27,6 +27,23 @@ __start:
 	l0 = r0; l1 = r0; l2 = r0; l3 = r0;
 	lc0 = r0; lc1 = r0;
 
+	/* Clocks and SDRAM as the robot has them: the timing model charges SDRAM and system MMR
+	 * accesses at SCLK, CCLK:SCLK from PLL_DIV, SDRAM latencies from EBIU_SDGCTL. Only the
+	 * divider changes (no PLL relock): CSEL and SSEL may change on the fly. */
+	IMM32(p0, PLL_DIV);
+	r1 = SRV1_PLL_DIV (z);
+	w[p0] = r1;
+	IMM32(p0, EBIU_SDRRC);
+	r1 = SRV1_EBIU_SDRRC (z);
+	w[p0] = r1;
+	IMM32(p0, EBIU_SDBCTL);
+	r1 = SRV1_EBIU_SDBCTL (z);
+	w[p0] = r1;
+	IMM32(p0, EBIU_SDGCTL);
+	IMM32(r1, SRV1_EBIU_SDGCTL);
+	[p0] = r1;
+	ssync;
+
 	/* Event vectors: everything we do not expect is fatal. */
 	IMM32(p0, EVT0);
 	r1.l = _bvb_unexpected; r1.h = _bvb_unexpected;

@@ -35,6 +35,20 @@
 #define CANARY_FP 0x5EED0FBF
 
 /* BF537 core MMRs */
+/* System MMRs the start-up programs as the SRV-1 board does (ADSP-BF537 hardware reference:
+ * PLL chapter, EBIU SDRAM controller). */
+#define PLL_DIV 0xFFC00004
+#define EBIU_SDGCTL 0xFFC00A10
+#define EBIU_SDBCTL 0xFFC00A14
+#define EBIU_SDRRC 0xFFC00A18
+/* The SRV-1: 22.118 MHz crystal x 22 = 486 MHz CCLK, SCLK = VCO / 4 = 121.6 MHz (its firmware's
+ * config: VCO_MULTIPLIER 22, SCLK_DIVIDER 4); 32 MB SDRAM, CAS latency 3, tRAS 6, tRP 3,
+ * tRCD 3, tWR 2 (EBIU_SDGCTL 0x0091998D), 32 MB bank with 9-bit columns (EBIU_SDBCTL 0x0013),
+ * refresh for 121 MHz (EBIU_SDRRC 0x0817). The timing model reads these registers. */
+#define SRV1_PLL_DIV 0x0004
+#define SRV1_EBIU_SDGCTL 0x0091998D
+#define SRV1_EBIU_SDBCTL 0x0013
+#define SRV1_EBIU_SDRRC 0x0817
 #define EVT0 0xFFE02000
 #define IMASK_MMR 0xFFE02104
 #define TCNTL 0xFFE03000
