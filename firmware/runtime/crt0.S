@@ -44,6 +44,50 @@ __start:
 	[p0] = r1;
 	ssync;
 
+	/* Caches as a robot build has them: code and data in SDRAM cached (the instruction cache
+	 * in the upper 16 KB of L1 code memory, a write-back data cache in the upper 16 KB of bank
+	 * A; bank B stays SRAM), L1 SRAM and MMRs need no CPLB. Locked 4 MB CPLBs: eight cover
+	 * the 32 MB of SDRAM for instructions and for data, eight more the window, uncached. The
+	 * data kernels stream from SDRAM pays line fills; C code runs from the instruction cache. */
+	IMM32(p0, ICPLB_ADDR0);
+	IMM32(p1, ICPLB_DATA0);
+	IMM32(p2, DCPLB_ADDR0);
+	IMM32(p3, DCPLB_DATA0);
+	IMM32(r2, ICPLB_SDRAM);
+	IMM32(r3, DCPLB_SDRAM);
+	r0 = 0;
+	IMM32(r1, 0x400000);
+	p4 = 8;
+	lsetup (.Lcplb0, .Lcplb1) lc0 = p4;
+.Lcplb0:
+	[p0++] = r0;
+	[p1++] = r2;
+	[p2++] = r0;
+	[p3++] = r3;
+.Lcplb1:
+	r0 = r0 + r1;
+	IMM32(r0, BVB_WINDOW_ADDR);
+	IMM32(r3, DCPLB_WINDOW);
+	lsetup (.Lcplb2, .Lcplb3) lc0 = p4;
+.Lcplb2:
+	[p2++] = r0;
+	[p3++] = r3;
+.Lcplb3:
+	r0 = r0 + r1;
+	ssync;
+	IMM32(p0, IMEM_CONTROL);
+	r0 = [p0];
+	r1 = ENCPLB | IMC (z);
+	r0 = r0 | r1;
+	[p0] = r0;
+	ssync;
+	IMM32(p0, DMEM_CONTROL);
+	r0 = [p0];
+	r1 = ENCPLB | DMC_ACACHE_BSRAM (z);
+	r0 = r0 | r1;
+	[p0] = r0;
+	ssync;
+
 	/* Event vectors: everything we do not expect is fatal. */
 	IMM32(p0, EVT0);
 	r1.l = _bvb_unexpected; r1.h = _bvb_unexpected;

@@ -49,6 +49,33 @@
 #define SRV1_EBIU_SDGCTL 0x0091998D
 #define SRV1_EBIU_SDBCTL 0x0013
 #define SRV1_EBIU_SDRRC 0x0817
+/* Caches and CPLBs (Blackfin Processor Programming Reference, memory chapter; bit names as in
+ * ADI's def_LPBlackfin.h). */
+#define DMEM_CONTROL 0xFFE00004
+#define DCPLB_ADDR0 0xFFE00100
+#define DCPLB_DATA0 0xFFE00200
+#define IMEM_CONTROL 0xFFE01004
+#define ICPLB_ADDR0 0xFFE01100
+#define ICPLB_DATA0 0xFFE01200
+#define ENCPLB 0x2            /* ENICPLB / ENDCPLB */
+#define IMC 0x4               /* IMEM_CONTROL: the upper 16 KB of L1 code is instruction cache */
+#define DMC_ACACHE_BSRAM 0x8  /* DMEM_CONTROL DMC = 10: bank A's upper 16 KB is data cache */
+#define CPLB_VALID 0x1
+#define CPLB_LOCK 0x2
+#define CPLB_USER_RD 0x4
+#define CPLB_USER_WR 0x8
+#define CPLB_SUPV_WR 0x10
+#define CPLB_DIRTY 0x80
+#define CPLB_L1_CHBL 0x1000
+#define PAGE_SIZE_4MB 0x30000
+/* SDRAM: code cached in the instruction cache, data cached write-back (dirty set up front: the
+ * page is written from the start, and a clean write-back page would fault on its first write). */
+#define ICPLB_SDRAM (CPLB_VALID | CPLB_LOCK | CPLB_USER_RD | CPLB_L1_CHBL | PAGE_SIZE_4MB)
+#define DCPLB_SDRAM (CPLB_VALID | CPLB_LOCK | CPLB_USER_RD | CPLB_USER_WR | CPLB_SUPV_WR | \
+                     CPLB_DIRTY | CPLB_L1_CHBL | PAGE_SIZE_4MB)
+/* The window, the host's channel: uncached, so what the firmware writes is there at once. */
+#define DCPLB_WINDOW (CPLB_VALID | CPLB_LOCK | CPLB_USER_RD | CPLB_USER_WR | CPLB_SUPV_WR | \
+                      CPLB_DIRTY | PAGE_SIZE_4MB)
 #define EVT0 0xFFE02000
 #define IMASK_MMR 0xFFE02104
 #define TCNTL 0xFFE03000

@@ -19,7 +19,8 @@
 
 
 #define BVB_WINDOW_ADDR 0x30000000
-#define BVB_WINDOW_MAX (64 << 20)
+/* 32 MB: eight 4 MB data CPLBs cover it, beside the eight that cover SDRAM (runtime/crt0.S). */
+#define BVB_WINDOW_MAX (32 << 20)
 #define BVB_MAGIC 0x31425642 /* "BVB1" */
 #define BVB_VERSION 1
 #define BVB_MAX_ARGS 12
@@ -31,7 +32,7 @@
 /* The BF537 memories a buffer can be placed in (addresses in firmware/runtime/link.ld). */
 enum bvb_place {
   BVB_PLACE_SDRAM = 0,   /* 32 MB external SDRAM: frames */
-  BVB_PLACE_L1A = 1,     /* L1 data bank A (32 KB) */
+  BVB_PLACE_L1A = 1,     /* L1 data bank A (16 KB SRAM; its upper 16 KB is data cache) */
   BVB_PLACE_L1B = 2,     /* L1 data bank B (24 KB usable; the stack takes the rest) */
   BVB_PLACE_SCRATCH = 3, /* L1 scratchpad (4 KB) */
   BVB_PLACE_WINDOW = 4,  /* in place, in the window: no copies (large runs) */
