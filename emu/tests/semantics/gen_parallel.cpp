@@ -1017,12 +1017,12 @@ int main(int argc, char** argv) {
     o << "\t.short 0x" << std::hex << il.w[0] << ", 0x" << il.w[1] << ", 0x" << il.w[2] << ", 0x" << il.w[3]
       << std::dec << ";\n";
     o << "\tCHECKREG R7, 0x00000001;\n";
-    // R5 and R6 belong to the handler; no illegal combination here names them.
+    // R5, R6 and P4 belong to the handler; no illegal combination here names them.
     for (int r = 0; r < M0; ++r) {
-      if (r == R0 + 5 || r == R0 + 6 || r == R0 + 7) continue;
+      if (r == R0 + 5 || r == R0 + 6 || r == R0 + 7 || r == P0 + 4) continue;
       o << "\tCHECKREG " << regname(r) << ", " << hex(pre.r[r]) << ";\n";
     }
-    o << "\tR6 = A0.W;\n\tCHECKREG R6, 0x00000000;\n";
+    o << "\tR6 = A0.W;\n\tCHECKREG R6, 0x00000000;\n\tR6 = ASTAT;\n\tCHECKREG R6, 0x00000000;\n";
     // The words the slots would have stored.
     for (u32 w : {0x20u, 0x28u, 0x38u, 0x68u, 0xA8u, 0xACu}) {
       u32 v = 0;
@@ -1031,9 +1031,10 @@ int main(int argc, char** argv) {
     }
     o << "\n\tdbg_pass;\n\n"
       << "xhandler:\n"
-      << "\t# Only EXCAUSE 0x22 is expected; anything else fails the test.\n"
-      << "\tR6 = SEQSTAT;\n\tR5 = 0x3F;\n\tR6 = R6 & R5;\n\tR5 = 0x22;\n\tCC = R6 == R5;\n"
-      << "\tIF !CC JUMP 9f;\n\tR7 += 1;\n\tR6 = RETX;\n\tR6 += 8;\n\tRETX = R6;\n\tRTX;\n"
+      << "\t# Only EXCAUSE 0x22 is expected; anything else fails the test. ASTAT is kept\n"
+      << "\t# in P4: the compare and the count change it.\n"
+      << "\tP4 = ASTAT;\n\tR6 = SEQSTAT;\n\tR5 = 0x3F;\n\tR6 = R6 & R5;\n\tR5 = 0x22;\n\tCC = R6 == R5;\n"
+      << "\tIF !CC JUMP 9f;\n\tR7 += 1;\n\tR6 = RETX;\n\tR6 += 8;\n\tRETX = R6;\n\tASTAT = P4;\n\tRTX;\n"
       << "9:\tdbg_fail;\n";
     ++n_illegal;
   }
