@@ -22,8 +22,8 @@
 // Legality follows GNU as (gas/config/bfin-parse.y: slot 1 takes the LDST group, slot 2 only
 // dspLDST loads and stores, at most one store, no register written by two slots) and the
 // illegal combinations of the simulator's own se_illegalcombination.S (no I register modified
-// by two slots, no D register loaded by two slots, a SEARCH only with a load, only 16-bit
-// loads, stores and DAG ops in slots 1 and 2). Each illegal combination is emitted as raw
+// by two slots, no D register loaded by two slots, a SEARCH only with a load through P0 and a
+// NOP, only 16-bit loads, stores and DAG ops in slots 1 and 2). Each illegal combination is emitted as raw
 // halfwords (the assembler refuses them) in a test for the operating environment, whose
 // EVT3 handler expects EXCAUSE 0x22 (illegal instruction combination, PRM "Exceptions",
 // SEQSTAT.EXCAUSE) and skips the 8-byte instruction; the test also checks that the faulting
@@ -984,8 +984,12 @@ int main(int argc, char** argv) {
       {"MNOP || R3 = R4 || NOP (register move in slot 1)", {MNOPW[0], MNOPW[1], 0x301C, 0x0000}},
       {"A0 = R0 || RAISE 15 || NOP (program control in slot 1)", {A0R0[0], A0R0[1], 0x009F, 0x0000}},
       {"MNOP || MNOP (a 32-bit instruction in slot 1)", {MNOPW[0], MNOPW[1], 0xC803, 0x1800}},
-      // SEARCH only with a load in the other slots.
+      // SEARCH only with a load through P0 and a NOP (the PRM text quoted in the
+      // simulator's decode_dsp32alu_0; se_illegalcombination.S counts [P0 ++ P1] illegal).
       {"(R0, R1) = SEARCH R2 (GT) || [P1] = R3 || NOP (SEARCH with a store)", {SEARCHW[0], SEARCHW[1], 0x930B, 0x0000}},
+      {"(R0, R1) = SEARCH R2 (GT) || R4 = [P0 ++ P1] || NOP (SEARCH with a P-modify load)", {SEARCHW[0], SEARCHW[1], 0x8108, 0x0000}},
+      {"(R0, R1) = SEARCH R2 (GT) || R4 = [P1++] || NOP (SEARCH with a load not through P0)", {SEARCHW[0], SEARCHW[1], 0x900C, 0x0000}},
+      {"(R0, R1) = SEARCH R2 (GT) || NOP || R4 = [I0] (SEARCH with a slot-2 load)", {SEARCHW[0], SEARCHW[1], 0x0000, 0x9D04}},
   };
   // One file each: a simulator that misses one check fails that file alone.
   int n_illegal = 0, n_known = 0;

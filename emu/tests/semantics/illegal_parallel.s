@@ -5,7 +5,8 @@
 # change nothing: not the registers slot 0 writes (D, accumulator, ASTAT), not the memory a
 # store would write. Rules: Blackfin Processor Programming Reference, "Issuing Parallel
 # Instructions" (one store at most; the two 16-bit slots may not modify one I register or
-# load one D register; SEARCH only with loads; slot 1 holds a load, store or DAG op).
+# load one D register; SEARCH only with a load through P0 and a NOP; slot 1 holds a load,
+# store or DAG op).
 # The assembler refuses these, so they are written as halfwords. The EVT3 handler counts the
 # exceptions in R7 (after checking EXCAUSE) and returns past the 8-byte instruction; it uses
 # R5, R6 and P4.
@@ -85,9 +86,24 @@
 	R6 = ASTAT;
 	CHECKREG R6, 0;
 
-	# 7. Legal: A0 = R0 || R3 = [P1] || R4 = [I2] runs without an exception.
+	# 7. (R0, R1) = SEARCH R2 (GT) || R4 = [P1++] || NOP: SEARCH goes only with a load
+	# through P0 (PRM text quoted in the simulator's decode_dsp32alu_0).
+	.short 0xCC0D, 0x0210, 0x900C, 0x0000;
+	CHECKREG R7, 7;
+	CHECKREG P1, 0xFF800000;
+	CHECKREG R4, 0x44444444;
+
+	# 8. Legal: (R0, R1) = SEARCH R2 (GT) || R4 = [P0++] || NOP.
+	imm32 P0, 0xFF800010;
+	(R0, R1) = SEARCH R2 (GT) || R4 = [P0++] || NOP;
+	CHECKREG R7, 7;
+	CHECKREG R4, 0x0000BBBB;
+	CHECKREG P0, 0xFF800014;
+
+	# 9. Legal: A0 = R0 || R3 = [P1] || R4 = [I2] runs without an exception.
+	imm32 R0, 0x10203040;
 	A0 = R0 || R3 = [P1] || R4 = [I2];
-	CHECKREG R7, 6;
+	CHECKREG R7, 7;
 	CHECKREG R3, 0x0000AAAA;
 	CHECKREG R4, 0x0000BBBB;
 	R6 = A0.W;
