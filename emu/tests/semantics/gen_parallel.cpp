@@ -574,7 +574,6 @@ struct Combo {
   std::string family;  // which slot writes what another reads
   Op s[3];
   bool circular = false;  // B/L of the modified I register set so that the update wraps
-  int circ_i = -1;
   std::vector<int> wrong_order;  // writer first
 };
 
@@ -819,7 +818,7 @@ int main(int argc, char** argv) {
     std::vector<Op> v;
     s1_dstores(S0D, v);
     for (const Op& s1 : v) {
-      Combo c{"s0w_s1st", {slot0(k, S0D, S0A, S0B), s1, nop16()}, false, -1, {}};
+      Combo c{"s0w_s1st", {slot0(k, S0D, S0A, S0B), s1, nop16()}, false, {}};
       c.wrong_order = {0, 1, 2};
       add_legal(e, st, c);
     }
@@ -827,7 +826,7 @@ int main(int argc, char** argv) {
   // 2. Slot 0 writes a D register that slot 2 stores.
   for (int k = 0; k < NS0; ++k)
     for (int f = 0; f < NIF; ++f) {
-      Combo c{"s0w_s2st", {slot0(k, S0D, S0A, S0B), nop16(), istore(f, S0D, 2, 2)}, false, -1, {}};
+      Combo c{"s0w_s2st", {slot0(k, S0D, S0A, S0B), nop16(), istore(f, S0D, 2, 2)}, false, {}};
       c.wrong_order = {0, 1, 2};
       add_legal(e, st, c);
     }
@@ -836,7 +835,7 @@ int main(int argc, char** argv) {
     std::vector<Op> v;
     s1_dloads(S0A, v);
     for (const Op& s1 : v) {
-      Combo c{"s1ld_s0r", {slot0(k, S0D, S0A, S0B), s1, nop16()}, false, -1, {}};
+      Combo c{"s1ld_s0r", {slot0(k, S0D, S0A, S0B), s1, nop16()}, false, {}};
       c.wrong_order = {1, 0, 2};
       add_legal(e, st, c);
     }
@@ -845,7 +844,7 @@ int main(int argc, char** argv) {
   for (int k = 0; k < NS0; ++k)
     for (int f = 0; f < NIF; ++f) {
       int r = s0_reads_b(k) ? S0B : S0A;
-      Combo c{"s2ld_s0r", {slot0(k, S0D, S0A, S0B), nop16(), iload(f, r, 2, 2)}, false, -1, {}};
+      Combo c{"s2ld_s0r", {slot0(k, S0D, S0A, S0B), nop16(), iload(f, r, 2, 2)}, false, {}};
       c.wrong_order = {2, 0, 1};
       add_legal(e, st, c);
     }
@@ -855,7 +854,7 @@ int main(int argc, char** argv) {
     s1_dloads(S1D, v);
     for (const Op& s1 : v)
       for (int f = 0; f < NIF; ++f) {
-        Combo c{"s1ld_s2st", {mnop(), s1, istore(f, S1D, 2, 2)}, false, -1, {}};
+        Combo c{"s1ld_s2st", {mnop(), s1, istore(f, S1D, 2, 2)}, false, {}};
         c.wrong_order = {0, 1, 2};
         add_legal(e, st, c);
       }
@@ -866,7 +865,7 @@ int main(int argc, char** argv) {
     s1_dstores(S2D, v);
     for (const Op& s1 : v)
       for (int f = 0; f < NIF; ++f) {
-        Combo c{"s2ld_s1st", {mnop(), s1, iload(f, S2D, 2, 2)}, false, -1, {}};
+        Combo c{"s2ld_s1st", {mnop(), s1, iload(f, S2D, 2, 2)}, false, {}};
         c.wrong_order = {0, 2, 1};
         add_legal(e, st, c);
       }
@@ -892,7 +891,7 @@ int main(int argc, char** argv) {
       for (const Op& m : mods)
         for (const Op& u : users) {
           if (circ && m.text.find("BREV") != std::string::npos) continue;
-          Combo c{circ ? "s1mod_s2use_circ" : "s1mod_s2use", {mnop(), m, u}, false, -1, {}};
+          Combo c{circ ? "s1mod_s2use_circ" : "s1mod_s2use", {mnop(), m, u}, false, {}};
           c.wrong_order = {0, 1, 2};
           add_legal(e, st, c, circ ? 1 : -1);
         }
@@ -911,7 +910,7 @@ int main(int argc, char** argv) {
     for (int circ = 0; circ < 2; ++circ)
       for (const Op& m : mods)
         for (const Op& u : users) {
-          Combo c{circ ? "s2mod_s1use_circ" : "s2mod_s1use", {mnop(), u, m}, false, -1, {}};
+          Combo c{circ ? "s2mod_s1use_circ" : "s2mod_s1use", {mnop(), u, m}, false, {}};
           c.wrong_order = {0, 2, 1};
           add_legal(e, st, c, circ ? 2 : -1);
         }
@@ -921,7 +920,7 @@ int main(int argc, char** argv) {
   for (int k = 0; k < NS0; ++k)
     for (int f = 0; f < ND; ++f)
       for (int g : {IF_W, IF_L, IF_H}) {
-        Combo c{"s0w_s1mod_s2st", {slot0(k, S0D, S0A, S0B), dag(f, 1, 1), istore(g, S0D, 1, 2)}, false, -1, {}};
+        Combo c{"s0w_s1mod_s2st", {slot0(k, S0D, S0A, S0B), dag(f, 1, 1), istore(g, S0D, 1, 2)}, false, {}};
         c.wrong_order = {0, 1, 2};
         add_legal(e, st, c);
       }
@@ -936,10 +935,10 @@ int main(int argc, char** argv) {
         Combo c;
         if (ppform_store(f)) {
           int r = s0_reads_b(k) ? S0B : S0A;
-          c = Combo{"s1ptr", {slot0(k, S0D, S0A, S0B), p, iload(IF_W, r, 2, 2)}, false, -1, {}};
+          c = Combo{"s1ptr", {slot0(k, S0D, S0A, S0B), p, iload(IF_W, r, 2, 2)}, false, {}};
           c.wrong_order = {2, 0, 1};
         } else {
-          c = Combo{"s1ptr", {slot0(k, S0D, S0A, S0B), p, istore(IF_W, S0D, 2, 2)}, false, -1, {}};
+          c = Combo{"s1ptr", {slot0(k, S0D, S0A, S0B), p, istore(IF_W, S0D, 2, 2)}, false, {}};
           c.wrong_order = {0, 1, 2};
         }
         add_legal(e, st, c);
