@@ -142,6 +142,9 @@
 	chk16 P5, 0x38, 1
 	chk16 P5, 0x28, 0x0001
 
+	# DMA_DONE is write-1-to-clear; clear it before starting again.
+	mmr16 P4, 0x28, 1
+	mmr16 P5, 0x28, 1
 	# b) every second pixel of every second row (rows 0, 2, 4, 6) - X_MODIFY 4 on
 	# 16-bit elements, Y_MODIFY 2*320 - 316 = 324.
 	mmr32 P4, 0x04, SRC
@@ -180,6 +183,9 @@
 	chk32 P5, 0x24, DST + 0x2000 + 640
 	chk16 P5, 0x28, 0x0001
 
+	# DMA_DONE is write-1-to-clear; clear it before starting again.
+	mmr16 P4, 0x28, 1
+	mmr16 P5, 0x28, 1
 	# c) 32-bit elements, every second word of row 100 - X_MODIFY 8.
 	mmr32 P4, 0x04, SRC + 100 * 320
 	mmr16 P4, 0x10, 40

@@ -125,6 +125,9 @@
 	chk32 P5, 0x24, DST + 1280
 	chk16 P5, 0x28, 0x0001
 
+	# DMA_DONE is write-1-to-clear; clear it before starting again.
+	mmr16 P4, 0x28, 1
+	mmr16 P5, 0x28, 1
 	# b) row 10 as 80 pixel pairs, last pair first.
 	mmr32 P4, 0x04, SRC + 10 * 160 + 158
 	mmr16 P4, 0x10, 80
@@ -159,6 +162,9 @@
 	chk32 P5, 0x24, DST + 0x800 + 160
 	chk16 P5, 0x28, 0x0001
 
+	# DMA_DONE is write-1-to-clear; clear it before starting again.
+	mmr16 P4, 0x28, 1
+	mmr16 P5, 0x28, 1
 	# c) 0x5aa5c33c 256 times.
 	ldc P0, DST + 0xf00
 	ldc R4, 0x5aa5c33c
@@ -195,6 +201,9 @@
 	chk32 P5, 0x24, FILL + 1024
 	chk16 P5, 0x28, 0x0001
 
+	# DMA_DONE is write-1-to-clear; clear it before starting again.
+	mmr16 P4, 0x28, 1
+	mmr16 P5, 0x28, 1
 	# d) row 20 written from DST + 0x1000 + 159 down to DST + 0x1000.
 	mmr32 P4, 0x04, SRC + 20 * 160
 	mmr16 P4, 0x10, 160

@@ -144,6 +144,9 @@
 	chk16 P5, 0x38, 1
 	chk16 P5, 0x28, 0x0001
 
+	# DMA_DONE is write-1-to-clear; clear it before starting again.
+	mmr16 P4, 0x28, 1
+	mmr16 P5, 0x28, 1
 	# b) s(k) = 3k + 1, k = 0..63, at SRC + 0x1000; frame of 160-byte rows at FRM + 0x2000.
 	ldc P0, SRC + 0x1000
 	R0 = 1;
