@@ -8,6 +8,8 @@
 #     1D destination.
 #  c) large descriptor list on the destination - 9-word descriptors (NDPL, NDPH first),
 #     the second one below the first in memory.
+#  d) a small list on the destination whose second descriptor switches from 8-bit to
+#     16-bit elements (WDSIZE comes from the descriptor just loaded).
 # Every byte is checked against the frame's pattern p(x, y) = (5x + 11y + 7) & 0xff
 # recomputed here; so are CURR_DESC_PTR (just past the last descriptor fetched),
 # NEXT_DESC_PTR, the CONFIG loaded from the last descriptor and IRQ_STATUS (DMA_DONE
@@ -78,6 +80,7 @@
 	.equ MDMA_S0, 0xFFC00F40
 	.equ DMAEN, 0x0001
 	.equ WNR, 0x0002
+	.equ WDSIZE_16, 0x0004
 	.equ DMA2D, 0x0010
 	.equ DI_EN, 0x0080
 	.equ NDSIZE_7, 0x0700
@@ -98,9 +101,12 @@
 2:	R2 = B[P0++] (Z);
 	R3 = R0.B (Z);
 	CC = R2 == R3;
-	IF !CC JUMP .Lfail;
+	IF !CC JUMP 9f;
 3:	R0 += 5;
 4:	R1 += 11;
+	JUMP.S 5f;
+9:	JUMP.L .Lfail;
+5:
 	.endm
 
 	start
@@ -230,6 +236,46 @@
 	chk32 P5, 0x00, 0
 	chk32 P5, 0x24, BUFE + 320
 	chk16 P5, 0x28, 0x0001
+	chk16 P4, 0x28, 0x0001
+	mmr16 P4, 0x28, 1
+	mmr16 P5, 0x28, 1
+
+	# d) small list on the destination whose second descriptor changes the element size -
+	# 160 bytes of row 30 as 8-bit elements into BUFC, then row 31 as 80 16-bit elements
+	# into BUFC + 0x200, from an 8-bit source.
+	mmr16 P3, 0x140, (DESC + 0x160) & 0xffff
+	mmr16 P3, 0x142, BUFC & 0xffff
+	mmr16 P3, 0x144, BUFC >> 16
+	mmr16 P3, 0x146, DMAEN | WNR | FLOW_SMALL | NDSIZE_8
+	mmr16 P3, 0x148, 160
+	mmr16 P3, 0x14a, 1
+	mmr16 P3, 0x14c, 0
+	mmr16 P3, 0x14e, 0
+	mmr16 P3, 0x160, 0
+	mmr16 P3, 0x162, (BUFC + 0x200) & 0xffff
+	mmr16 P3, 0x164, (BUFC + 0x200) >> 16
+	mmr16 P3, 0x166, DMAEN | WNR | WDSIZE_16 | DI_EN
+	mmr16 P3, 0x168, 80
+	mmr16 P3, 0x16a, 2
+	mmr16 P3, 0x16c, 0
+	mmr16 P3, 0x16e, 0
+
+	mmr32 P4, 0x04, SRC + 30 * 160
+	mmr16 P4, 0x10, 320
+	mmr16 P4, 0x14, 1
+	mmr16 P4, 0x08, DMAEN | DI_EN
+	mmr32 P5, 0x00, DESC + 0x140
+	mmr16 P5, 0x08, DMAEN | WNR | FLOW_SMALL | NDSIZE_8
+	wait_done P5
+
+	ldc P0, BUFC
+	chk_band 0, 30, 160, 1
+	ldc P0, BUFC + 0x200
+	chk_band 0, 31, 160, 1
+	chk32 P5, 0x24, BUFC + 0x200 + 160
+	chk16 P5, 0x08, DMAEN | WNR | WDSIZE_16 | DI_EN
+	chk16 P5, 0x28, 0x0001
+	chk32 P4, 0x24, SRC + 32 * 160
 	chk16 P4, 0x28, 0x0001
 
 	dbg_pass
