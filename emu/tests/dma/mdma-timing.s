@@ -149,6 +149,8 @@
 	timed_start DMAEN | WNR | DI_EN
 	timed_wait
 	chk_window 6450, 6550
+	# The source ran without DI_EN - no DMA_DONE, and DMA_RUN clear as it is finished.
+	chk16 P4, 0x28, 0x0000
 	clr_done
 
 	# B) 300 words L1 bank A -> L1 bank B
