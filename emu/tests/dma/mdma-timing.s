@@ -9,8 +9,8 @@
 #               larger side (source and destination granted together, "full SCLK rate",
 #               HRM ch. 5 "Traffic Control"), L1 to L1 the sum of both sides (same memory
 #               space, a conflict)
-# and 5 core cycles per SCLK cycle (bfin_timing_sclk_ratio - PLL_DIV's reset SSEL 5,
-# CSEL 0), rounded up once over the whole transfer. So, from the CONFIG write to DMA_DONE -
+# and 5 core cycles per SCLK cycle (bfin_timing_sclk_ratio of PLL_DIV, which the test sets
+# to SSEL 5, CSEL 0 first), rounded up once over the whole transfer. So, from the CONFIG write to DMA_DONE -
 #  A) 1280 bytes, 8-bit, SDRAM to L1, stop mode
 #       10 + 1280 * max(1, 1) = 1290 SCLK = 6450 core cycles
 #  B) 300 words, 32-bit, L1 bank A to L1 bank B
@@ -21,12 +21,18 @@
 #  D) A again, with 4000 cycles of computation right after the CONFIG write - the DMA is
 #     still running after them (DMA_RUN set, DMA_DONE clear), and DMA_DONE still comes
 #     6450 core cycles after the CONFIG write - the computation overlapped the transfer.
+#  E) A again after PLL_DIV is set to SSEL 4 (CSEL 0) - 4 core cycles per SCLK cycle,
+#       1290 SCLK = 5160 core cycles
 # The firmware reads CYCLES (SYSCFG.CCEN set) just before the CONFIG write and after the
-# poll loop that sees DMA_DONE; the poll loop (an MMR read, a test, a branch, a counter)
-# sees DMA_DONE up to one iteration late, so each count must lie in [T, T + 100].
+# poll loop that sees DMA_DONE; the poll loop (an MMR read at SCLK, a test, a branch, a
+# counter) sees DMA_DONE up to one iteration late, so each count must lie in [T, T + 100].
+# The code runs from L1 instruction SRAM, so that under the memory model the loop is not
+# slowed by instruction fetches from SDRAM (with the series 0001-0031, 25 to 39 cycles
+# over T).
 # With the model off (--timing none) the same transfers complete within a few cycles and
 # every check fails.
 # mach: bfin
+# ld: -Ttext=0xFFA00000 -Tdata=0xFF807000
 # sim: --environment operating --timing bf537
 # timeout: 20
 
@@ -84,6 +90,7 @@
 	.equ BUFA, 0xFF800000	/* L1 data bank A */
 	.equ BUFB, 0xFF900000	/* L1 data bank B */
 	.equ DESC, 0xFF804000
+	.equ PLL_DIV, 0xFFC00004
 	.equ MDMA_D0, 0xFFC00F00
 	.equ MDMA_S0, 0xFFC00F40
 	.equ DMAEN, 0x0001
@@ -134,6 +141,12 @@
 	BITSET (R0, 1);
 	SYSCFG = R0;
 	CSYNC;
+
+	# SCLK = VCO / 5, CCLK = VCO (PLL_DIV SSEL 5, CSEL 0 - the chip's reset value; the
+	# simulator's PLL starts at SSEL 4).
+	ldc P3, PLL_DIV
+	R0 = 0x0005;
+	W[P3] = R0;
 
 	ldc P5, MDMA_D0
 	ldc P4, MDMA_S0
@@ -214,6 +227,22 @@
 	R0 = 4000;
 	CC = R2 == R0;
 	IF !CC JUMP .Lfail;
+	clr_done
+
+	# E) A with SCLK = VCO / 4 (PLL_DIV SSEL 4, CSEL 0, as the SRV-1 firmware sets it)
+	ldc P3, PLL_DIV
+	R0 = 0x0004;
+	W[P3] = R0;
+	mmr32 P4, 0x04, SRC
+	mmr16 P4, 0x10, 1280
+	mmr16 P4, 0x14, 1
+	mmr32 P5, 0x04, BUFA
+	mmr16 P5, 0x10, 1280
+	mmr16 P5, 0x14, 1
+	mmr16 P4, 0x08, DMAEN
+	timed_start DMAEN | WNR | DI_EN
+	timed_wait
+	chk_window 5160, 5260
 
 	dbg_pass
 .Lfail:
