@@ -23,6 +23,11 @@
 #     6450 core cycles after the CONFIG write - the computation overlapped the transfer.
 #  E) A again after PLL_DIV is set to SSEL 4 (CSEL 0) - 4 core cycles per SCLK cycle,
 #       1290 SCLK = 5160 core cycles
+#  F) 8 rows of 160 bytes into a 2D destination with DI_SEL (interrupt after every row),
+#     still SSEL 4 - DMA_DONE after the first row with DMA_RUN still set, CURR_Y_COUNT 7
+#     and CURR_X_COUNT reloaded to 160 (ADSP-BF537 HRM, DMAx_CONFIG.DI_SEL and the
+#     count registers), 10 + 160 = 170 SCLK = 680 core cycles; cleared, DMA_DONE again
+#     after the second row, 10 + 320 = 330 SCLK = 1320 core cycles after the CONFIG write.
 # The firmware reads CYCLES (SYSCFG.CCEN set) just before the CONFIG write and after the
 # poll loop that sees DMA_DONE; the poll loop (an MMR read at SCLK, a test, a branch, a
 # counter) sees DMA_DONE up to one iteration late, so each count must lie in [T, T + 100].
@@ -97,6 +102,8 @@
 	.equ WNR, 0x0002
 	.equ WDSIZE_16, 0x0004
 	.equ WDSIZE_32, 0x0008
+	.equ DMA2D, 0x0010
+	.equ DI_SEL, 0x0040
 	.equ DI_EN, 0x0080
 	.equ NDSIZE_8, 0x0800
 	.equ FLOW_SMALL, 0x6000
@@ -243,6 +250,29 @@
 	timed_start DMAEN | WNR | DI_EN
 	timed_wait
 	chk_window 5160, 5260
+	clr_done
+
+	# F) 8 rows of 160 bytes, destination 2D with DI_SEL - DMA_DONE after each row
+	# (still SSEL 4)
+	mmr32 P4, 0x04, SRC
+	mmr16 P4, 0x10, 1280
+	mmr16 P4, 0x14, 1
+	mmr32 P5, 0x04, BUFA
+	mmr16 P5, 0x10, 160
+	mmr16 P5, 0x14, 1
+	mmr16 P5, 0x18, 8
+	mmr16 P5, 0x1c, 1
+	mmr16 P4, 0x08, DMAEN
+	timed_start DMAEN | WNR | DMA2D | DI_SEL | DI_EN
+	timed_wait
+	chk_window 680, 780
+	# after row 1 - DMA_DONE with DMA_RUN, CURR_Y_COUNT 7, CURR_X_COUNT reloaded
+	chk16 P5, 0x28, 0x0009
+	chk16 P5, 0x38, 7
+	chk16 P5, 0x30, 160
+	mmr16 P5, 0x28, 1
+	timed_wait
+	chk_window 1320, 1420
 
 	dbg_pass
 .Lfail:
