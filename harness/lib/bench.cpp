@@ -14,12 +14,16 @@
 namespace bvb {
 
 std::vector<BenchRow> run_bench(const Target &target, const BenchOptions &opts) {
+  // Each measured call in a simulator run of its own: its cycles must not depend on -j, -k or
+  // the calls measured before it (caches and SDRAM rows carry over within a run).
+  Target isolated = target;
+  isolated.set_isolated(true);
   CheckOptions co;
   co.seed = opts.seed;
   co.jobs = opts.jobs;
   co.progress = opts.progress;
   co.run_c = opts.run_c;
-  Checker ck(target, co);
+  Checker ck(isolated, co);
   std::vector<BenchRow> rows;
   std::vector<CheckCall> calls;
   const bool compare = opts.compare_sim && target.timing() != "none";
@@ -56,9 +60,10 @@ std::vector<BenchRow> run_bench(const Target &target, const BenchOptions &opts) 
     });
   }
   ck.flush();
+  target.take_null_call_cycles(isolated);
   std::vector<Failure> failures = ck.failures();
   if (compare) {
-    Target plain = target;
+    Target plain = isolated;
     plain.set_timing("none");
     Checker sk(plain, co);
     for (size_t i = 0; i < sim_calls.size(); ++i) {

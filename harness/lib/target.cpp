@@ -318,7 +318,8 @@ std::vector<CallResult> Target::run(const std::vector<Call> &calls, int jobs,
   uint64_t total = 0;
   for (const auto &c : calls) total += window_bytes(c);
   const uint64_t cap = uint64_t(BVB_WINDOW_MAX) - 65536;
-  const size_t per_window_calls = std::max<size_t>(1, (calls.size() + jobs - 1) / jobs);
+  const size_t per_window_calls =
+      isolated_ ? 1 : std::max<size_t>(1, (calls.size() + jobs - 1) / jobs);
   std::vector<std::pair<size_t, size_t>> windows;  // [begin, end)
   size_t begin = 0;
   uint64_t bytes = sizeof(bvb_header);

@@ -107,6 +107,12 @@ class Target {
   // caches) or "none" (the simulator's own counts: one per instruction, fixed extras).
   const std::string &timing() const { return timing_; }
   void set_timing(const std::string &t);
+  // One call per simulator run: under the timing model a call's cycles depend on what ran
+  // before it in the same run (cache contents, open SDRAM rows), so measurements that must be
+  // exact whatever else is measured with them (bench, budgets) start each call afresh.
+  void set_isolated(bool on) { isolated_ = on; }
+  // The empty call's cycles as another Target (a copy of this one) measured them.
+  void take_null_call_cycles(const Target &from) const { null_call_cycles_ = from.null_call_cycles_; }
   static constexpr uint32_t kDefaultCycleLimit = 300000000;
 
  private:
@@ -115,6 +121,7 @@ class Target {
   FirmwareImage image_;
   std::string simulator_;
   std::string timing_;
+  bool isolated_ = false;
   mutable uint32_t null_call_cycles_ = 0;
 };
 
