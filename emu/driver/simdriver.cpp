@@ -47,6 +47,10 @@ std::vector<std::string> command_line(const RunSpec &spec) {
 std::string find_simulator(const std::string &default_path) {
   const char *env = std::getenv("BFBENCH_SIM");
   std::string path = env && *env ? env : default_path;
+  // A host-only build (BVB_HOST_ONLY) has no simulator of its own to fall back on.
+  if (path.empty())
+    throw SetupError("this bfbench is a host-only build (BVB_HOST_ONLY=ON): no simulator or firmware; "
+                     "use --impl host, or build with the toolchain (emu/bootstrap.sh)");
   if (access(path.c_str(), X_OK) != 0)
     throw SetupError("simulator not found or not executable: " + path +
                      " (run emu/bootstrap.sh, or set BFBENCH_SIM)");
