@@ -16,6 +16,7 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
+#include "cleanup.h"
 #include "elf_symbols.h"
 #include "io.h"
 #include "simdriver.h"
@@ -217,6 +218,7 @@ std::string make_temp_file() {
   int fd = mkstemp(pathbuf.data());
   if (fd < 0) throw sim::SetupError("cannot create a window file: " + tmpl);
   close(fd);
+  register_temp_file(pathbuf.data());  // removed if bfbench is interrupted
   return pathbuf.data();
 }
 
@@ -258,7 +260,7 @@ void Target::run_window(const std::vector<const Call *> &calls,
   const std::string path = make_temp_file();
   struct Cleanup {
     std::string p;
-    ~Cleanup() { std::remove(p.c_str()); }
+    ~Cleanup() { remove_temp_file(p); }
   } cleanup{path};
   sim::RunSpec spec;
   spec.simulator = simulator_;
@@ -386,7 +388,7 @@ struct Session::Impl {
       proc->finish(10);
     }
     if (win) munmap(win, layout.size);
-    if (!path.empty()) std::remove(path.c_str());
+    if (!path.empty()) remove_temp_file(path);
   }
 
   bvb_header *header() { return reinterpret_cast<bvb_header *>(win); }
