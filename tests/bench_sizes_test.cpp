@@ -7,6 +7,7 @@
 
 #include "check.h"
 #include "family.h"
+#include "io.h"
 
 namespace bvb {
 namespace {
@@ -49,6 +50,28 @@ TEST(BenchSizes, EveryKernelRunsAtItsMinimumAndRefusesLess) {
         EXPECT_NE(bench_size_problem(k, r->min_w + 1, r->min_h), "") << k;
       }
     }
+  }
+}
+
+// A run's grid of points gets a cycle limit that covers its work: the C reference takes about
+// 1,540 simulator cycles a candidate (289 candidates a point, 11x11 templates), so 64x64 points
+// need some 1.8e9 cycles (under the bf537 model too), six times the default limit that
+// reported them as a hang; the limit allows twice that.
+TEST(RunPlans, NccCycleLimitScalesWithThePoints) {
+  const std::string a = testing::TempDir() + "ncc_plan_a.pgm";
+  Image img(160, 120);
+  write_pnm(a, img);
+  const Family *f = family_of("ncc_match");
+  ASSERT_NE(f, nullptr);
+  for (int n : {8, 64}) {
+    RunRequest req;
+    req.kernel = "ncc_match";
+    req.inputs = {a, a};
+    req.params.set("cols=" + std::to_string(n));
+    req.params.set("rows=" + std::to_string(n));
+    RunPlan p = f->plan_run(req);
+    const uint32_t limit = p.call.cycle_limit ? p.call.cycle_limit : Target::kDefaultCycleLimit;
+    EXPECT_GE(double(limit), 2.0 * 1540 * 289 * n * n) << n << "x" << n << " points";
   }
 }
 

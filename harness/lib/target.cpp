@@ -11,6 +11,7 @@
 #include <chrono>
 #include <memory>
 
+#include <csignal>
 #include <fcntl.h>
 
 #include <sys/mman.h>
@@ -285,6 +286,12 @@ void Target::run_window(const std::vector<const Call *> &calls,
                             " has a different kernel registry than this bfbench: rebuild both");
     null_call_cycles_ = got.null_call_cycles;
 
+    // Killed from outside (by a user, a job control, the OOM killer), the simulator says nothing
+    // about the kernel it was running: that is no failure of the kernel's.
+    if (rr.ending == sim::Ending::Signalled &&
+        (rr.signal == SIGKILL || rr.signal == SIGTERM || rr.signal == SIGINT || rr.signal == SIGHUP))
+      throw sim::SetupError("the simulator was killed from outside bfbench (" + sim::describe(rr) +
+                            "); no kernel is to blame: run again");
     uint32_t resume = uint32_t(calls.size());
     if (got.state != BVB_FW_DONE) {
       // The simulator died inside command `current`: blame it, go on after it.
