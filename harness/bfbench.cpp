@@ -14,6 +14,7 @@
 
 #include "bench.h"
 #include "check.h"
+#include "cleanup.h"
 #include "family.h"
 #include "io.h"
 #include "patterns.h"
@@ -182,12 +183,21 @@ void print_check_report(const Checker &ck, size_t max_per_kernel) {
     std::printf("%s\n", line.c_str());
   }
   std::map<std::string, size_t> shown;
+  std::map<std::string, std::pair<std::string, std::string>> hidden_of;  // key -> kernel, impl
   for (const auto &f : ck.failures()) {
-    if (shown[f.kernel + f.impl]++ >= max_per_kernel) continue;
+    const std::string key = f.kernel + " (" + f.impl + ")";
+    if (shown[key]++ >= max_per_kernel) {
+      hidden_of[key] = {f.kernel, f.impl};
+      continue;
+    }
     std::printf("FAILED %s (%s) %s, seed %u: %s: %s\n", f.kernel.c_str(), f.impl.c_str(),
                 f.case_name.c_str(), f.seed, failure_kind_name(f.kind), f.message.c_str());
     std::printf("  replay: bfbench check -k %s --seed %u\n", f.kernel.c_str(), f.seed);
   }
+  // Say what was left out and how to see it, rather than stopping silently at the first few.
+  for (const auto &kv : hidden_of)
+    std::printf("  ... %zu more failures of %s not shown (-v shows all): bfbench check -k %s --seed %u -v\n",
+                shown[kv.first] - max_per_kernel, kv.first.c_str(), kv.second.first.c_str(), ck.seed());
 }
 
 int cmd_check(Args &args) {
@@ -236,16 +246,36 @@ int cmd_check(Args &args) {
     }
     std::printf("seed %u:\n", o.seed);
     print_check_report(ck, opts.verbose ? 1000 : 3);
-    failures += ck.failures().size();
+    // Calls that failed, not failure records: one call can fail several ways at once.
     for (const auto &kv : ck.tally())
-      for (const auto &it : kv.second) calls += it.second.calls;
+      for (const auto &it : kv.second) calls += it.second.calls, failures += it.second.failed;
   }
   if (failures) {
-    std::printf("%zu failures in %zu calls\n", failures, calls);
+    std::printf("%zu of %zu calls failed\n", failures, calls);
     return 1;
   }
   std::printf("all %zu calls bit-exact, guards intact, ABI kept\n", calls);
   return 0;
+}
+
+// A size below a selected kernel's minimum is the user's mistake, caught before anything runs
+// (below it the helpers divide by empty ranges and the assembly reads past its buffers).
+void check_bench_sizes(const std::string &glob, const std::vector<Size> &sizes) {
+  for (const auto &k : Registry::product().kernels()) {
+    if (!glob_match(glob, k.name)) continue;
+    for (Size s : sizes) {
+      std::string why = bench_size_problem(k.name, s.w, s.h);
+      if (!why.empty()) throw Usage("--size " + std::to_string(s.w) + "x" + std::to_string(s.h) + ": " + why +
+                                    " (-k selects kernels)");
+    }
+  }
+}
+
+// Only assembly kernels have budgets: a -k that selects none would judge nothing and pass.
+void check_budget_glob(const std::string &glob) {
+  for (const auto &k : Registry::product().kernels())
+    if (k.has_asm && glob_match(glob, k.name)) return;
+  throw InputError("no assembly kernel matches '" + glob + "' (bfbench list)");
 }
 
 std::vector<Size> parse_sizes(Args &args) {
@@ -271,6 +301,7 @@ int cmd_bench(Args &args) {
   BenchOptions opts;
   opts.kernel_glob = args.value("-k", "*", "--kernel");
   auto sizes = parse_sizes(args);
+  check_bench_sizes(opts.kernel_glob, sizes);
   if (!sizes.empty()) opts.sizes = sizes;
   std::string json_path = args.value("--json", ""), csv_path = args.value("--csv", ""),
               md_path = args.value("--markdown", "");
@@ -354,6 +385,13 @@ int cmd_run(Args &args) {
   call.args = plan.call.args;
   call.bufs = plan.call.bufs;
   CallResult r = target.run_one(call);
+  // Frames too large for the Blackfin's memory are the input's fault, not the kernel's.
+  if (r.crash.empty() && r.status == BVB_NO_SPACE && r.detail < call.bufs.size()) {
+    const Buffer &b = call.bufs[r.detail];
+    throw InputError(req.kernel + ": the frames are too large for the Blackfin: buffer '" + b.name + "' (" +
+                     std::to_string(b.data.size()) + " bytes) does not fit " + place_name(b.place) +
+                     " (use smaller frames, or --impl host)");
+  }
   std::string err = describe_failure(call, r, target.elf());
   if (!err.empty()) {
     std::fprintf(stderr, "bfbench: %s (%s): %s\n", req.kernel.c_str(), impl.c_str(), err.c_str());
@@ -385,8 +423,14 @@ int cmd_budgets(Args &args) {
   opts.jobs = int(to_long(args.value("-j", std::to_string(default_jobs())), "-j", 1, 256));
   opts.run_c = false;
   opts.progress = isatty(2);
+  check_budget_glob(opts.kernel_glob);
   Target target = make_target(args);
   args.positional();
+  // Held until the file is rewritten: two updates at once would each write what they loaded,
+  // and the later rename would drop the other's entries.
+  FileLock lock;
+  if (update)
+    lock = FileLock(path, [&] { std::fprintf(stderr, "bfbench: waiting for another budgets --update of %s\n", path.c_str()); });
   std::vector<Budget> budgets;
   bool exists = access(path.c_str(), F_OK) == 0;
   std::string file_timing = target.timing();
@@ -462,6 +506,8 @@ int cmd_budgets(Args &args) {
 }  // namespace
 
 int main(int argc, char **argv) {
+  // An interrupted run removes its window files and kills its simulators.
+  bvb::install_interrupt_cleanup();
   if (argc < 2) {
     print_help(stderr);
     return 2;

@@ -357,6 +357,14 @@ TEST(ScenePaths, ScriptExpansion) {
   EXPECT_THROW(path_script("circle", 1, 1, 1, true), InputError);
 }
 
+// The million-step cap holds for pauses too: each S move alone is within it, their sum is not
+// (a 13 KB spec of them once reached 8 GB).
+TEST(ScenePaths, StepCapCoversPauses) {
+  EXPECT_EQ(expand_script("S1000000", 0.5, 3).size(), 1000000u);
+  EXPECT_THROW(expand_script("S1000000+S1", 0.5, 3), InputError);
+  EXPECT_THROW(expand_script("F400000+S1000000", 0.5, 3), InputError);
+}
+
 TEST(ScenePaths, SquareReturnsToStart) {
   for (bool left : {true, false}) {
     const auto steps = expand_script(path_script("square", 36, 90, 36, left), 0.5, 3);

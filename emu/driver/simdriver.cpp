@@ -1,11 +1,15 @@
 #include "simdriver.h"
 
+#include "cleanup.h"
+
 #include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+
+#include <pthread.h>
 
 #include <fcntl.h>
 #include <poll.h>
@@ -47,6 +51,10 @@ std::vector<std::string> command_line(const RunSpec &spec) {
 std::string find_simulator(const std::string &default_path) {
   const char *env = std::getenv("BFBENCH_SIM");
   std::string path = env && *env ? env : default_path;
+  // A host-only build (BVB_HOST_ONLY) has no simulator of its own to fall back on.
+  if (path.empty())
+    throw SetupError("this bfbench is a host-only build (BVB_HOST_ONLY=ON): no simulator or firmware; "
+                     "use --impl host, or build with the toolchain (emu/bootstrap.sh)");
   if (access(path.c_str(), X_OK) != 0)
     throw SetupError("simulator not found or not executable: " + path +
                      " (run emu/bootstrap.sh, or set BFBENCH_SIM)");
@@ -68,8 +76,25 @@ Process::Process(const RunSpec &spec) {
   posix_spawn_file_actions_adddup2(&fa, pipefd[1], 1);
   posix_spawn_file_actions_adddup2(&fa, pipefd[1], 2);
   posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+  // The simulator leads its own process group, so a timeout or an interrupt kills whatever it
+  // started too (a wrapper script that does not exec, say) and never leaves one holding the pipe.
+  // Interrupts are blocked from the spawn until the group is registered for the handler to kill;
+  // the child starts with none blocked.
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  posix_spawnattr_setpgroup(&attr, 0);
+  sigset_t none, interrupts, old;
+  sigemptyset(&none);
+  sigemptyset(&interrupts);
+  for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&interrupts, s);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK);
+  pthread_sigmask(SIG_BLOCK, &interrupts, &old);
   pid_t pid;
-  int rc = posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ);
+  int rc = posix_spawn(&pid, argv[0], &fa, &attr, argv.data(), environ);
+  if (rc == 0) register_child_group(pid);
+  pthread_sigmask(SIG_SETMASK, &old, nullptr);
+  posix_spawnattr_destroy(&attr);
   posix_spawn_file_actions_destroy(&fa);
   close(pipefd[1]);
   if (rc != 0) {
@@ -80,12 +105,18 @@ Process::Process(const RunSpec &spec) {
   fd_ = pipefd[0];
 }
 
-Process::~Process() {
-  if (pid_ > 0 && !exited_) {
-    kill(pid_, SIGKILL);
+void Process::kill_group() {
+  kill(-pid_, SIGKILL);
+  if (!exited_) {
     while (waitpid(pid_, &status_, 0) < 0 && errno == EINTR) {
     }
+    exited_ = true;
   }
+  unregister_child_group(pid_);
+}
+
+Process::~Process() {
+  if (pid_ > 0 && !group_gone_) kill_group();
   if (fd_ >= 0) close(fd_);
 }
 
@@ -119,16 +150,23 @@ RunResult Process::finish(double timeout_s) {
   while (running()) {
     if (std::chrono::steady_clock::now() >= deadline) {
       timed_out = true;
-      kill(pid_, SIGKILL);
-      while (waitpid(pid_, &status_, 0) < 0 && errno == EINTR) {
-      }
-      exited_ = true;
       break;
     }
     drain(fd_ >= 0 ? 100 : 0);
     if (fd_ < 0) usleep(1000);
   }
-  while (fd_ >= 0) drain(100);
+  // The simulator has exited (or is killed now): what it printed is read for at most a second
+  // more, since something it started may hold the pipe open; then the group is killed, which
+  // ends anything left.
+  const auto drain_until = std::chrono::steady_clock::now() + std::chrono::seconds(timed_out ? 0 : 1);
+  while (!timed_out && fd_ >= 0 && std::chrono::steady_clock::now() < drain_until) drain(100);
+  kill_group();
+  group_gone_ = true;
+  if (fd_ >= 0) {
+    drain(0);
+    close(fd_);
+    fd_ = -1;
+  }
   if (timed_out) {
     result_.ending = Ending::TimedOut;
   } else if (WIFEXITED(status_)) {
@@ -158,7 +196,24 @@ std::string describe(const RunResult &r) {
   while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
   if (!out.empty()) {
     auto nl = out.rfind('\n');
-    what += ": " + out.substr(nl == std::string::npos ? 0 : nl + 1);
+    std::string last = out.substr(nl == std::string::npos ? 0 : nl + 1);
+    // What a simulator prints can be anything (a crashing program's binary output): shown
+    // printable and short, so a report stays one readable line on any terminal.
+    std::string shown;
+    for (unsigned char c : last) {
+      if (shown.size() >= 200) {
+        shown += "...";
+        break;
+      }
+      if (c >= 0x20 && c < 0x7f) {
+        shown += char(c);
+      } else {
+        char esc[8];
+        std::snprintf(esc, sizeof esc, "\\x%02x", c);
+        shown += esc;
+      }
+    }
+    what += ": " + shown;
   }
   return what;
 }

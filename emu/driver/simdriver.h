@@ -59,8 +59,10 @@ class Process {
 
  private:
   void drain(int timeout_ms);
+  void kill_group();  // kills the simulator's process group and reaps the simulator
   int pid_ = -1, fd_ = -1;
   bool exited_ = false;
+  bool group_gone_ = false;
   int status_ = 0;
   RunResult result_;
 };

@@ -336,6 +336,7 @@ RunPlan plan_run(RunRequest &req) {
   fr.f1 = a.data;
   fr.f2 = b.data;
   RunPlan p;
+  double npoints = 1;
   if (req.kernel == "ncc_match") {
     // Points on a cols x rows grid over the legal area (every point is matched).
     const int cols = req.params.get_int("cols", 8, 1, 64), rows = req.params.get_int("rows", 6, 1, 64);
@@ -348,6 +349,7 @@ RunPlan plan_run(RunRequest &req) {
         pts.push_back({lo + (cols > 1 ? (hx - lo) * i / (cols - 1) : (hx - lo) / 2),
                        lo + (rows > 1 ? (hy - lo) * j / (rows - 1) : (hy - lo) / 2)});
     p.call = match_call(fr, pts, r, s, "run");
+    npoints = double(pts.size());
     p.write = [pts](std::vector<std::vector<uint8_t>> &bufs, const std::string &path) {
       std::string text = "# x y dx dy score_q15 status\n";
       for (size_t i = 0; i < pts.size(); ++i) {
@@ -380,6 +382,13 @@ RunPlan plan_run(RunRequest &req) {
                 std::to_string(y) + ", r " + std::to_string(r) + ", s " + std::to_string(s);
   }
   for (auto &bf : p.call.bufs) bf.place = bf.name == "scratch" ? BVB_PLACE_L1A : BVB_PLACE_WINDOW;
+  // The default cycle limit fits the bench's 32 points; a run's grid of up to 64x64 points, or
+  // a wider search, takes longer and would be reported as a hang. The C reference takes about 13
+  // simulator cycles a template pixel per candidate (32 for the score map), the timing model
+  // more: the limit allows 64, and at most what the watchdog counts.
+  const double taps = double(2 * r + 1) * (2 * r + 1), cand = double(2 * s + 1) * (2 * s + 1);
+  const double limit = npoints * cand * taps * 64;
+  p.call.cycle_limit = uint32_t(std::clamp(limit, double(Target::kDefaultCycleLimit), 4.0e9));
   return p;
 }
 

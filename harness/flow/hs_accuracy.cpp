@@ -65,6 +65,9 @@ std::vector<HsAccuracyRow> hs_accuracy_table(const std::string &dir, int32_t alp
     row.fixed_vs_double = flow_distance(fixed, dbl);
     row.fixed = flow_errors(fixed, truth);
     row.dbl = flow_errors(dbl, truth);
+    // Averages over no pixel would print as a perfect 0.0000.
+    if (row.fixed.valid == 0)
+      throw InputError(base + s.truth + ": no pixel has a known ground-truth vector (EPE and AE undefined)");
     rows.push_back(row);
   }
   return rows;

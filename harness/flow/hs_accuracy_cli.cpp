@@ -102,8 +102,9 @@ int hs_accuracy_command(int argc, char **argv) {
     std::fprintf(stderr, "hs-accuracy: %s\n", e.what());
     return 2;
   } catch (const std::exception &e) {
+    // Exit 1 means a check failed; a fault of the program is reported as bfbench's main does.
     std::fprintf(stderr, "hs-accuracy: internal error: %s\n", e.what());
-    return 1;
+    return 2;
   }
 }
 

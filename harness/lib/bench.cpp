@@ -1,6 +1,7 @@
 #include "bench.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cinttypes>
 #include <cstdio>
 #include <map>
@@ -33,6 +34,8 @@ std::vector<BenchRow> run_bench(const Target &target, const BenchOptions &opts) 
       const KernelInfo *ki = target.registry().find(k);
       if (!ki || !glob_match(opts.kernel_glob, k)) continue;
       for (Size s : opts.sizes) {
+        // Sizes the budgets name for other kernels may be below this one's minimum.
+        if (!bench_size_problem(k, s.w, s.h).empty()) continue;
         Rng rng(opts.seed ^ (uint64_t(s.w) << 20) ^ uint64_t(s.h));
         CheckCall c = f->bench_call(k, s.w, s.h, rng);
         if (c.kernel.empty()) continue;
@@ -222,6 +225,22 @@ std::string bench_markdown(const std::vector<BenchRow> &rows) {
   return o.str();
 }
 
+namespace {
+// The size a case names: "WxH", alone or followed by a space and more ("160x120 N=10").
+bool case_size(const std::string &cs, int *w, int *h) {
+  size_t i = 0;
+  auto number = [&](int *v) {
+    const size_t start = i;
+    long n = 0;
+    while (i < cs.size() && std::isdigit((unsigned char)cs[i]) && i - start < 6) n = n * 10 + (cs[i++] - '0');
+    *v = int(n);
+    return i > start && !(i < cs.size() && std::isdigit((unsigned char)cs[i]));
+  };
+  if (!number(w) || i >= cs.size() || cs[i++] != 'x' || !number(h)) return false;
+  return i == cs.size() || cs[i] == ' ';
+}
+}  // namespace
+
 std::vector<Budget> load_budgets(const std::string &path, std::string *timing) {
   auto bytes = read_file(path);
   json::Value v = json::parse(std::string(bytes.begin(), bytes.end()), path);
@@ -247,6 +266,15 @@ std::vector<Budget> load_budgets(const std::string &path, std::string *timing) {
     }
     if (std::count(kv.first.begin(), kv.first.end(), '/') != 2)
       throw InputError(path + ": budget key '" + kv.first + "' is not kernel/impl/case");
+    // The case starts with the size it is measured at, which must be one the kernel can take.
+    const std::string kernel = kv.first.substr(0, kv.first.find('/'));
+    const std::string cs = kv.first.substr(kv.first.rfind('/') + 1);
+    int w = 0, h = 0;
+    if (!case_size(cs, &w, &h) || w < 1 || h < 1 || w > kMaxFrameDim || h > kMaxFrameDim)
+      throw InputError(path + ": budget key '" + kv.first + "': the case must start with WxH, 1.." +
+                       std::to_string(kMaxFrameDim) + " each");
+    const std::string why = bench_size_problem(kernel, w, h);
+    if (!why.empty()) throw InputError(path + ": budget key '" + kv.first + "': " + why);
     out.push_back(bd);
   }
   return out;

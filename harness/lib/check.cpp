@@ -83,6 +83,10 @@ int CheckCall::scratch(std::string name, size_t bytes) {
   return int(bufs.size()) - 1;
 }
 
+namespace {
+std::string differ(size_t n) { return std::to_string(n) + (n == 1 ? " element differs" : " elements differ"); }
+}  // namespace
+
 std::string first_difference(const std::vector<uint8_t> &expected, const std::vector<uint8_t> &actual,
                              const View &view) {
   View v = view;
@@ -109,7 +113,7 @@ std::string first_difference(const std::vector<uint8_t> &expected, const std::ve
     s << "element (" << x << ", " << y << ")";
     if (x >= v.width) s << " (in the row padding)";
     s << ": expected " << element(expected, first, v) << ", got " << element(actual, first, v)
-      << "; " << ndiff << " elements differ\n";
+      << "; " << differ(ndiff) << "\n";
     // The 5x5 neighbourhood, expected | actual.
     for (int dy = -2; dy <= 2; ++dy) {
       const int yy = y + dy;
@@ -134,7 +138,7 @@ std::string first_difference(const std::vector<uint8_t> &expected, const std::ve
     }
   } else {
     s << "element " << first << ": expected " << element(expected, first, v) << ", got "
-      << element(actual, first, v) << "; " << ndiff << " elements differ\n";
+      << element(actual, first, v) << "; " << differ(ndiff) << "\n";
   }
   return s.str();
 }
@@ -186,7 +190,10 @@ void Checker::judge(const CheckCall &cc, uint32_t impl, const Call &call, const 
                     const std::vector<std::vector<uint8_t>> &expected, const HostBuffers &host) {
   auto &t = tally_[cc.kernel][impl_name(impl)];
   ++t.calls;
-  auto fail = [&](Failure::Kind kind, const std::string &msg) {
+  auto fail = [&](Failure::Kind kind, std::string msg) {
+    // The report prints the kind before the message: "hang: hang: ..." says it twice.
+    const std::string prefix = std::string(failure_kind_name(kind)) + ": ";
+    if (msg.compare(0, prefix.size(), prefix) == 0) msg.erase(0, prefix.size());
     failures_.push_back({cc.kernel, impl_name(impl), cc.case_name, opts_.seed, kind, msg});
   };
   const size_t before = failures_.size();

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,14 @@ class Rng {
     return z ^ (z >> 31);
   }
   uint32_t u32() { return uint32_t(next() >> 32); }
-  int uniform(int lo, int hi) { return lo + int(next() % uint64_t(hi - lo + 1)); }  // [lo, hi]
+  // [lo, hi]; an empty range is the caller's bug (a size below a kernel's minimum), reported
+  // rather than divided by.
+  int uniform(int lo, int hi) {
+    if (hi < lo)
+      throw std::logic_error("random value wanted from the empty range " + std::to_string(lo) + ".." +
+                             std::to_string(hi));
+    return lo + int(next() % (uint64_t(int64_t(hi) - lo) + 1));
+  }
 
  private:
   uint64_t s_;

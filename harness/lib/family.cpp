@@ -1,6 +1,9 @@
 #include "family.h"
 
 #include <cstdlib>
+#include <map>
+
+#include "bvb/hornschunck.h"
 
 #include "io.h"
 
@@ -31,8 +34,13 @@ std::string Params::get_str(const std::string &key, const std::string &fallback)
 }
 
 void Params::check_all_used() const {
+  // The keys asked for are the ones this kernel knows: listing them saves a trip to the source.
+  std::string known;
+  for (const auto &k : used_) known += (known.empty() ? "" : ", ") + k;
   for (const auto &kv : values_)
-    if (!used_.count(kv.first)) throw InputError("unknown parameter '" + kv.first + "' for this kernel");
+    if (!used_.count(kv.first))
+      throw InputError("unknown parameter '" + kv.first + "' for this kernel (" +
+                       (known.empty() ? std::string("it takes none") : "it takes " + known) + ")");
 }
 
 std::vector<const Family *> &families() {
@@ -50,6 +58,52 @@ const Family *family_of(const std::string &kernel) {
     for (const auto &k : f->kernels)
       if (k == kernel) return f;
   return nullptr;
+}
+
+const SizeRule *bench_size_rule(const std::string &kernel) {
+  static const std::map<std::string, SizeRule> rules = {
+      {"add_sat_u8", {1, 1, false}},
+      {"blobs_uyvy", {2, 1, true}},
+      {"canny", {3, 3, false}},  // on a Sobel gradient (3x3 at least)
+      {"uyvy_to_grey", {2, 1, true}},
+      {"uyvy_to_rgb24", {2, 1, true}},
+      {"erode3x3_u8", {1, 1, false}},
+      {"dilate3x3_u8", {1, 1, false}},
+      {"scanline_profile_u8", {1, 2, false}},  // a band of half the height, at least one row
+      {"scanline_shift_u8", {2, 1, false}},    // minimum overlap half the width, at least 1
+      {"sobel3x3_u8", {3, 3, false}},
+      {"sobel3x3_s16", {3, 3, false}},
+      {"harris_response", {5, 5, false}},
+      {"harris_nms", {5, 5, false}},     // on harris_response's output
+      {"harris_select", {5, 5, false}},  // on harris_nms's output
+      {"lk_pyramid", {1, 1, false}},
+      {"lk_track", {5, 5, false}},  // tracks Harris corners
+      // 32 points whose 11x11 templates and +-8 searches lie inside: 2 * (5 + 8) + 1.
+      {"ncc_match", {27, 27, false}},
+      {"ncc_scoremap", {27, 27, false}},
+      {"region_grow", {1, 1, false}},
+      {"free_space", {1, 1, false}},
+      {"hs_prepare", {BVB_HS_MIN_DIM, BVB_HS_MIN_DIM, false}},
+      {"hs_iterate", {BVB_HS_MIN_DIM, BVB_HS_MIN_DIM, false}},
+      {"hornschunck", {BVB_HS_MIN_DIM, BVB_HS_MIN_DIM, false}},
+      // Whole-pipeline frames: the avoidance pipelines bench only at 160x120 and 320x240 and
+      // skip other sizes; odometry renders a UYVY scene at any even size from 16x16.
+      {"pipe_seg_avoid", {1, 1, false}},
+      {"pipe_flow_avoid", {1, 1, false}},
+      {"pipe_odometry", {16, 16, true}},
+  };
+  auto it = rules.find(kernel);
+  return it == rules.end() ? nullptr : &it->second;
+}
+
+std::string bench_size_problem(const std::string &kernel, int w, int h) {
+  const SizeRule *r = bench_size_rule(kernel);
+  if (!r) return "";
+  const std::string got = std::to_string(w) + "x" + std::to_string(h);
+  if (w < r->min_w || h < r->min_h || (r->even_width && (w & 1)))
+    return kernel + " needs at least " + std::to_string(r->min_w) + "x" + std::to_string(r->min_h) +
+           (r->even_width ? " and an even width" : "") + ", not " + got;
+  return "";
 }
 
 Image read_frame(const std::string &path, int raw_w, int raw_h, bool want_grey) {

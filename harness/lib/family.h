@@ -60,6 +60,19 @@ const Family *family_of(const std::string &kernel);
 bool register_family(const Family *f);
 #define BVB_FAMILY(var) static const bool var##_registered_ = ::bvb::register_family(&var)
 
+// The smallest frame a kernel's bench call takes: the kernel's stated minimum (its header), or
+// what the bench call builds around it (ncc's search windows, the Harris corners lk_track
+// tracks), and whether the width must be even (UYVY pairs). Below it the assembly may fault or
+// hang, so bench and budgets refuse such sizes as bad input instead of blaming the kernel.
+struct SizeRule {
+  int min_w = 1, min_h = 1;
+  bool even_width = false;
+};
+// Every kernel with a bench call has an entry; nullptr for one without.
+const SizeRule *bench_size_rule(const std::string &kernel);
+// "" when the kernel can be benched at w x h, else why not, naming its minimum.
+std::string bench_size_problem(const std::string &kernel, int w, int h);
+
 // Reads an input frame for bfbench run: PGM/PPM by content, raw .uyvy by extension (needs size).
 Image read_frame(const std::string &path, int raw_w, int raw_h, bool want_grey = true);
 

@@ -4,32 +4,154 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <sstream>
+#include <cstdlib>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include "cleanup.h"
 
 namespace bvb {
 
-std::vector<uint8_t> read_file(const std::string &path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError(path + ": cannot open: " + std::strerror(errno));
-  std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-  if (f.bad()) throw InputError(path + ": read error");
+namespace {
+
+std::string describe_type(mode_t m) {
+  if (S_ISDIR(m)) return "a directory";
+  if (S_ISCHR(m)) return "a character device";
+  if (S_ISBLK(m)) return "a block device";
+  if (S_ISFIFO(m)) return "a FIFO";
+  if (S_ISSOCK(m)) return "a socket";
+  return "not a regular file";
+}
+
+bool write_all(int fd, const void *data, size_t size) {
+  const char *p = static_cast<const char *>(data);
+  while (size > 0) {
+    ssize_t n = ::write(fd, p, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    p += n;
+    size -= size_t(n);
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<uint8_t> read_file(const std::string &path, size_t max_bytes) {
+  // open() rather than a stream: a stream reports a directory as an exception from deep in the
+  // library with no file name, and reads a device like /dev/zero for ever.
+  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw InputError(path + ": cannot open: " + std::strerror(errno));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st;
+  if (fstat(fd, &st) != 0) throw InputError(path + ": cannot stat: " + std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) throw InputError(path + ": is a directory, not a file");
+  const std::string limit = std::to_string(max_bytes) + " bytes";
+  std::vector<uint8_t> bytes;
+  if (S_ISREG(st.st_mode)) {
+    if (uint64_t(st.st_size) > max_bytes)
+      throw InputError(path + ": " + std::to_string(st.st_size) + " bytes, more than the " + limit +
+                       " it may have");
+    bytes.reserve(size_t(st.st_size));
+  }
+  // Devices and FIFOs have no size to check first: read until the limit, then refuse.
+  uint8_t buf[65536];
+  for (;;) {
+    ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw InputError(path + ": read error: " + std::strerror(errno));
+    if (n == 0) break;
+    if (bytes.size() + size_t(n) > max_bytes)
+      throw InputError(path + ": more than the " + limit + " it may have (" + describe_type(st.st_mode) +
+                       " that does not end?)");
+    bytes.insert(bytes.end(), buf, buf + n);
+  }
   return bytes;
 }
 
 void write_file_atomic(const std::string &path, const void *data, size_t size) {
-  std::string tmp = path + ".tmp." + std::to_string(getpid());
-  FILE *f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw InputError(path + ": cannot write: " + std::strerror(errno));
-  bool ok = std::fwrite(data, 1, size, f) == size;
-  ok = (std::fflush(f) == 0) && ok;
-  ok = (std::fclose(f) == 0) && ok;
-  if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw InputError(path + ": write failed: " + std::strerror(errno));
+  struct stat st;
+  bool exists = ::stat(path.c_str(), &st) == 0;  // follows symbolic links
+  if (!exists && errno != ENOENT) throw InputError(path + ": cannot write: " + std::strerror(errno));
+  std::string target = path;
+  if (exists) {
+    if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) {
+      // Devices (/dev/null, a terminal) and FIFOs are streams the user chose: written straight,
+      // never replaced by a regular file.
+      int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+      if (fd < 0) throw InputError(path + ": cannot write: " + std::strerror(errno));
+      bool ok = write_all(fd, data, size);
+      int err = errno;
+      ok = (::close(fd) == 0) && ok;
+      if (!ok) throw InputError(path + ": write failed: " + std::strerror(err));
+      return;
+    }
+    if (!S_ISREG(st.st_mode))
+      throw InputError(path + ": is " + describe_type(st.st_mode) + ", not a file that can be written");
+    // A symbolic link is followed: the file it names is replaced, the link stays a link.
+    char *real = ::realpath(path.c_str(), nullptr);
+    if (!real) throw InputError(path + ": cannot resolve: " + std::strerror(errno));
+    target = real;
+    std::free(real);
+  } else {
+    struct stat lst;
+    if (::lstat(path.c_str(), &lst) == 0 && S_ISLNK(lst.st_mode))
+      throw InputError(path + ": is a symbolic link to nothing; not written");
   }
+  // The new contents go to a temporary file beside the target, renamed over it when complete: a
+  // failed or interrupted run leaves the old file, never a half-written one.
+  std::string tmp = target + ".tmp.XXXXXX";
+  int fd = ::mkstemp(tmp.data());
+  if (fd < 0) throw InputError(path + ": cannot write: " + std::strerror(errno));
+  register_temp_file(tmp);
+  bool ok = write_all(fd, data, size);
+  int err = errno;
+  if (ok && exists) ::fchmod(fd, st.st_mode & 07777);  // keep the replaced file's permissions
+  else if (ok) {
+    mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask);  // as a newly created file would be (mkstemp makes 0600)
+  }
+  if (::close(fd) != 0 && ok) ok = false, err = errno;
+  if (ok && std::rename(tmp.c_str(), target.c_str()) != 0) ok = false, err = errno;
+  if (!ok) std::remove(tmp.c_str());
+  unregister_temp_file(tmp);
+  if (!ok) throw InputError(path + ": write failed: " + std::strerror(err));
+}
+
+FileLock::FileLock(const std::string &path, const std::function<void()> &on_wait) {
+  const auto slash = path.rfind('/');
+  const std::string dir = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+  fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd_ < 0) throw InputError(path + ": cannot lock its directory: " + std::strerror(errno));
+  if (::flock(fd_, LOCK_EX | LOCK_NB) == 0) return;
+  if (errno == EWOULDBLOCK && on_wait) on_wait();
+  while (::flock(fd_, LOCK_EX) != 0) {
+    if (errno == EINTR) continue;
+    const int err = errno;
+    ::close(fd_);
+    fd_ = -1;
+    throw InputError(path + ": cannot lock its directory: " + std::strerror(err));
+  }
+}
+
+FileLock &FileLock::operator=(FileLock &&o) noexcept {
+  if (this != &o) {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = o.fd_;
+    o.fd_ = -1;
+  }
+  return *this;
+}
+
+FileLock::~FileLock() {
+  if (fd_ >= 0) ::close(fd_);  // closing releases the lock
 }
 
 namespace {
@@ -65,6 +187,8 @@ struct PnmHeader {
 Image parse_pnm(const std::vector<uint8_t> &bytes, const std::string &name) {
   if (bytes.size() < 2 || bytes[0] != 'P' || !std::strchr("2356", bytes[1]) || bytes[1] == 0)
     throw InputError(name + ": not a PGM/PPM file (bad magic)");
+  // The magic is two bytes and whitespace: "P55 ..." is not a P5 header.
+  if (bytes.size() < 3 || !std::isspace(bytes[2])) throw InputError(name + ": not a PGM/PPM file (bad magic)");
   const char kind = char(bytes[1]);
   const bool ascii = kind == '2' || kind == '3';
   const int channels = (kind == '3' || kind == '6') ? 3 : 1;
@@ -92,6 +216,10 @@ Image parse_pnm(const std::vector<uint8_t> &bytes, const std::string &name) {
       throw InputError(name + ": truncated: " + std::to_string(bytes.size() - h.pos) + " of " +
                        std::to_string(n) + " pixel bytes");
     std::memcpy(img.data.data(), bytes.data() + h.pos, n);
+    for (size_t i = 0; i < n; ++i)
+      if (img.data[i] > maxval)
+        throw InputError(name + ": pixel value " + std::to_string(img.data[i]) + " above maxval " +
+                         std::to_string(maxval) + " at byte " + std::to_string(h.pos + i));
   }
   if (maxval != 255)
     for (auto &p : img.data) p = uint8_t((p * 255 + maxval / 2) / maxval);

@@ -1,9 +1,11 @@
 // File I/O for the harness: every reader rejects malformed input with an InputError carrying one
 // line that names the file and the problem; every writer writes a temporary file next to the
-// target and renames it, so a failed run never leaves a half-written output.
+// target and renames it, so a failed run never leaves a half-written output (devices and FIFOs,
+// which cannot be renamed over, are written straight).
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -17,11 +19,38 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-std::vector<uint8_t> read_file(const std::string &path);
+// Sizes the harness accepts for any frame: large enough for every kernel's memory map.
+constexpr int kMaxFrameDim = 4096;
+// The most any input file may hold: a 4096x4096 .flo (8 bytes a pixel) with its header, the
+// largest legitimate input. Checked before reading, so /dev/zero cannot exhaust memory.
+constexpr size_t kMaxInputBytes = 12 + size_t(kMaxFrameDim) * kMaxFrameDim * 8;
+
+// Reads a whole file; a directory, a file over max_bytes, or a device or FIFO that gives more
+// is an InputError naming the file.
+std::vector<uint8_t> read_file(const std::string &path, size_t max_bytes = kMaxInputBytes);
+// Writes a file whole. A new path or a regular file is written to a temporary file and renamed
+// over it; a symbolic link is followed (the file it names is replaced, the link kept); a
+// character device (/dev/null) or a FIFO is written straight; anything else is refused.
 void write_file_atomic(const std::string &path, const void *data, size_t size);
 inline void write_file_atomic(const std::string &path, const std::vector<uint8_t> &bytes) {
   write_file_atomic(path, bytes.data(), bytes.size());
 }
+
+// An exclusive advisory lock (flock) on the directory holding a file, held while the object
+// lives. Files written by rename cannot carry the lock themselves: a process waiting on the old
+// file would wake up holding a lock on a file nobody else opens any more.
+class FileLock {
+ public:
+  FileLock() = default;
+  // Blocks until the lock is free; calls on_wait first if another process holds it.
+  FileLock(const std::string &path, const std::function<void()> &on_wait);
+  FileLock(FileLock &&o) noexcept : fd_(o.fd_) { o.fd_ = -1; }
+  FileLock &operator=(FileLock &&o) noexcept;
+  ~FileLock();
+
+ private:
+  int fd_ = -1;
+};
 
 // Netpbm: P2/P5 (grey) and P3/P6 (RGB), maxval 1..255. Writers emit binary P5/P6.
 Image read_pnm(const std::string &path);
@@ -35,8 +64,5 @@ std::vector<uint8_t> read_uyvy(const std::string &path, int width, int height);
 // Middlebury .flo: "PIEH", int32 width, int32 height, then interleaved float32 (u, v).
 FlowField read_flo(const std::string &path);
 void write_flo(const std::string &path, const FlowField &flow);
-
-// Sizes the harness accepts for any frame: large enough for every kernel's memory map.
-constexpr int kMaxFrameDim = 4096;
 
 }  // namespace bvb

@@ -11,11 +11,13 @@
 #include <chrono>
 #include <memory>
 
+#include <csignal>
 #include <fcntl.h>
 
 #include <sys/mman.h>
 #include <unistd.h>
 
+#include "cleanup.h"
 #include "elf_symbols.h"
 #include "io.h"
 #include "simdriver.h"
@@ -217,6 +219,7 @@ std::string make_temp_file() {
   int fd = mkstemp(pathbuf.data());
   if (fd < 0) throw sim::SetupError("cannot create a window file: " + tmpl);
   close(fd);
+  register_temp_file(pathbuf.data());  // removed if bfbench is interrupted
   return pathbuf.data();
 }
 
@@ -258,7 +261,7 @@ void Target::run_window(const std::vector<const Call *> &calls,
   const std::string path = make_temp_file();
   struct Cleanup {
     std::string p;
-    ~Cleanup() { std::remove(p.c_str()); }
+    ~Cleanup() { remove_temp_file(p); }
   } cleanup{path};
   sim::RunSpec spec;
   spec.simulator = simulator_;
@@ -283,6 +286,12 @@ void Target::run_window(const std::vector<const Call *> &calls,
                             " has a different kernel registry than this bfbench: rebuild both");
     null_call_cycles_ = got.null_call_cycles;
 
+    // Killed from outside (by a user, a job control, the OOM killer), the simulator says nothing
+    // about the kernel it was running: that is no failure of the kernel's.
+    if (rr.ending == sim::Ending::Signalled &&
+        (rr.signal == SIGKILL || rr.signal == SIGTERM || rr.signal == SIGINT || rr.signal == SIGHUP))
+      throw sim::SetupError("the simulator was killed from outside bfbench (" + sim::describe(rr) +
+                            "); no kernel is to blame: run again");
     uint32_t resume = uint32_t(calls.size());
     if (got.state != BVB_FW_DONE) {
       // The simulator died inside command `current`: blame it, go on after it.
@@ -387,7 +396,7 @@ struct Session::Impl {
       proc->finish(10);
     }
     if (win) munmap(win, layout.size);
-    if (!path.empty()) std::remove(path.c_str());
+    if (!path.empty()) remove_temp_file(path);
   }
 
   bvb_header *header() { return reinterpret_cast<bvb_header *>(win); }

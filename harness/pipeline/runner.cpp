@@ -396,8 +396,10 @@ int pipeline_command(int argc, char **argv) {
     std::fprintf(stderr, "bfbench pipeline: %s\n", e.what());
     return 2;
   } catch (const sim::SetupError &e) {
+    // A simulator or firmware that cannot run is a set-up problem, exit 2 as in every command;
+    // 1 is kept for decisions that differ.
     std::fprintf(stderr, "bfbench pipeline: %s\n", e.what());
-    return 1;
+    return 2;
   }
 }
 

@@ -27,6 +27,11 @@ Pose step_pose(const Pose &p, double forward_in, double turn_deg) {
   return q;
 }
 
+namespace {
+// A path longer than this is a mistake: at 16 bytes a step, the cap bounds a script's memory.
+constexpr double kMaxSteps = 1e6;
+}  // namespace
+
 std::vector<Step> expand_script(const std::string &script, double speed_in, double turn_rate_deg) {
   if (!(speed_in > 0) || !(turn_rate_deg > 0))
     throw InputError("path: speed and turn rate must be > 0");
@@ -50,6 +55,10 @@ std::vector<Step> expand_script(const std::string &script, double speed_in, doub
     const char kind = tok[0];
     if (kind == 'S') {
       if (v != std::floor(v)) throw InputError("path '" + script + "': S takes whole frames");
+      // Checked before the pauses are added: each S is within the cap, many of them are not.
+      if (v + double(steps.size()) > kMaxSteps)
+        throw InputError("path '" + script.substr(0, 40) + (script.size() > 40 ? "...'" : "'") +
+                         ": more than a million steps");
       for (int k = 0; k < int(v); ++k) steps.push_back({0, 0});
     } else {
       const bool turn = kind == 'L' || kind == 'R';
@@ -58,8 +67,9 @@ std::vector<Step> expand_script(const std::string &script, double speed_in, doub
       const long full = long(std::floor(v / rate + 1e-9));
       double rest = v - double(full) * rate;
       if (rest < 1e-9 * rate) rest = 0;
-      if (double(full) + double(steps.size()) > 1e6)
-        throw InputError("path '" + script + "': more than a million steps");
+      if (double(full) + double(steps.size()) > kMaxSteps)
+        throw InputError("path '" + script.substr(0, 40) + (script.size() > 40 ? "...'" : "'") +
+                         ": more than a million steps");
       for (long k = 0; k <= full; ++k) {
         const double amount = k < full ? rate : rest;
         if (amount <= 0) continue;

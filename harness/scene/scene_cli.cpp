@@ -93,8 +93,9 @@ int scene_command(int argc, char **argv) {
     std::fprintf(stderr, "scene: %s\n", e.what());
     return 2;
   } catch (const std::exception &e) {
+    // Exit 1 means a check failed; a fault of the program is reported as bfbench's main does.
     std::fprintf(stderr, "scene: internal error: %s\n", e.what());
-    return 1;
+    return 2;
   }
 }
 

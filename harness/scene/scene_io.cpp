@@ -550,9 +550,13 @@ struct CsvCursor {
   }
   long long integer(const std::string &s, const char *what) const {
     const size_t start = (!s.empty() && s[0] == '-') ? 1 : 0;
-    if (s.size() <= start || s.size() > 19 || s.find_first_not_of("0123456789", start) != std::string::npos)
+    if (s.size() <= start || s.size() > 20 || s.find_first_not_of("0123456789", start) != std::string::npos)
       fail(std::string(what) + ": not a whole number: '" + s + "'");
-    return std::stoll(s);
+    // 19 digits can exceed 64 bits: strtoll says so rather than throwing as stoll does.
+    errno = 0;
+    const long long v = std::strtoll(s.c_str(), nullptr, 10);
+    if (errno == ERANGE) fail(std::string(what) + ": out of range: '" + s + "'");
+    return v;
   }
 };
 

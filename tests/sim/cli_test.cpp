@@ -4,6 +4,9 @@
 
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
 
 #include <algorithm>
 #include <cstdio>
@@ -26,7 +29,9 @@ struct CliRun {
 std::string dir() { return testing::TempDir(); }
 
 CliRun bfbench(const std::string &args, const std::string &env = "") {
-  const std::string o = dir() + "cli.out", e = dir() + "cli.err";
+  // Per process: ctest runs this file's tests in parallel.
+  const std::string id = std::to_string(getpid());
+  const std::string o = dir() + "cli." + id + ".out", e = dir() + "cli." + id + ".err";
   const std::string cmd = env + " " + BFBENCH_EXE + " " + args + " >" + o + " 2>" + e;
   int rc = std::system(cmd.c_str());
   auto slurp = [](const std::string &p) {
@@ -141,6 +146,99 @@ TEST(Cli, BudgetsFailWhenOverOrMissing) {
   EXPECT_EQ(upd.status, 0) << upd.err;
   EXPECT_NE(upd.out.find("add_sat_u8/asm/160x120                   new -> "), std::string::npos) << upd.out;
   EXPECT_EQ(bfbench("budgets -k add_sat_u8 --file " + empty).status, 0);
+}
+
+}  // namespace
+}  // namespace bvb
+
+namespace bvb {
+namespace {
+
+// A budget's size must be one its kernel can take: 0x0 divided by zero, -5x-5 ran for half a
+// minute into a hardware error, huge sizes ran out of memory.
+TEST(Cli, BudgetKeysWithImpossibleSizes) {
+  const std::string f = dir() + "badsize.json";
+  for (const char *key : {"add_sat_u8/asm/0x0", "add_sat_u8/asm/-5x-5", "add_sat_u8/asm/99999x99999",
+                          "add_sat_u8/asm/160x", "uyvy_to_grey/asm/3x2"}) {
+    write(f, std::string("{\"budgets\": {\"") + key + "\": {\"cycles\": 5}}}");
+    expect_bad_input("budgets -k add_sat_u8 --file " + f, std::string("budget key '") + key + "'");
+  }
+}
+
+// Two updates at once with different -k: each keeps the other's entries (the file's directory is
+// locked from load to rewrite; without it the later rename dropped the earlier update).
+TEST(Cli, ConcurrentBudgetUpdatesKeepBoth) {
+  const std::string sub = dir() + "budget_lock/", f = sub + "budgets.json";
+  std::system(("rm -rf " + sub + " && mkdir -p " + sub).c_str());
+  write(f, "{\"budgets\": {}}");
+  const std::string cmd = std::string(BFBENCH_EXE) + " budgets --update -j 1 --file " + f;
+  const int rc = std::system(("(" + cmd + " -k add_sat_u8 >" + sub + "a.out 2>&1 & " + cmd +
+                              " -k erode3x3_u8 >" + sub + "b.out 2>&1 & wait)")
+                                 .c_str());
+  ASSERT_EQ(rc, 0);
+  std::ifstream in(f);
+  std::stringstream s;
+  s << in.rdbuf();
+  const std::string text = s.str();
+  for (const char *key : {"add_sat_u8/asm/160x120", "add_sat_u8/asm/640x480", "erode3x3_u8/asm/160x120",
+                          "erode3x3_u8/asm/640x480"})
+    EXPECT_NE(text.find(key), std::string::npos) << key << " lost:\n" << text;
+}
+
+// Frames larger than the Blackfin's memory are bad input, not the kernel's failure.
+TEST(Cli, RunOnFramesTooLargeForTheBlackfin) {
+  const std::string big = dir() + "big4096.pgm", out = dir() + "never_big.pgm";
+  Image img(4096, 4096);
+  write_pnm(big, img);
+  expect_bad_input("run add_sat_u8 --in " + big + " --in " + big + " --out " + out, "too large for the Blackfin", out);
+  std::remove(big.c_str());
+}
+
+}  // namespace
+}  // namespace bvb
+
+namespace bvb {
+namespace {
+
+std::vector<pid_t> children_of(pid_t pid) {
+  std::vector<pid_t> out;
+  const std::string task = "/proc/" + std::to_string(pid) + "/task";
+  std::string cmd = "cat " + task + "/*/children 2>/dev/null";
+  FILE *p = popen(cmd.c_str(), "r");
+  if (!p) return out;
+  int c;
+  while (std::fscanf(p, "%d", &c) == 1) out.push_back(c);
+  pclose(p);
+  return out;
+}
+
+// A simulator killed from outside mid-check is no kernel's failure: a set-up error, exit 2.
+TEST(Cli, SimulatorKilledFromOutsideIsNotBlamedOnTheKernel) {
+  const std::string o = dir() + "killed.out", e = dir() + "killed.err";
+  pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    freopen(o.c_str(), "w", stdout);
+    freopen(e.c_str(), "w", stderr);
+    execl(BFBENCH_EXE, BFBENCH_EXE, "check", "-k", "add_sat_u8", "--seed", "1", "-j", "1", (char *)nullptr);
+    _exit(127);
+  }
+  std::vector<pid_t> kids;
+  for (int i = 0; i < 400 && kids.empty(); ++i) {
+    usleep(25000);
+    kids = children_of(pid);
+  }
+  ASSERT_FALSE(kids.empty()) << "no simulator started";
+  usleep(200000);
+  for (pid_t k : kids) kill(k, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  std::ifstream ef(e);
+  std::stringstream err;
+  err << ef.rdbuf();
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2) << err.str();
+  EXPECT_NE(err.str().find("killed from outside"), std::string::npos) << err.str();
 }
 
 }  // namespace
