@@ -48,7 +48,7 @@ Layout lay_out(const std::vector<const Call *> &calls) {
       uint64_t data = ((pos + b.guard + b.align - 1) / b.align) * b.align + b.skew;
       offs.push_back(uint32_t(data - b.guard));
       pos = data + b.data.size() + b.guard;
-      if (pos > BVB_WINDOW_MAX) throw InputError("a call's buffers do not fit the 32 MB window");
+      if (pos > BVB_WINDOW_MAX) throw InputError("a call's buffers do not fit the 32 MB window: the frames are too large for the Blackfin");
     }
     l.offsets.push_back(std::move(offs));
   }
