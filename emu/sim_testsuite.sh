@@ -259,7 +259,8 @@ run_test() {
 
   local limit=${opt[timeout]:-$ST_TIMEOUT}
   local -a as_opts ld_opts cc_opts sim_opts prog_opts wa=() wl=()
-  read -ra as_opts <<<"${opt[as]} -I$ST_SUITE"
+  # A test of ours may include files beside it (emu/tests/dma/mdma.inc).
+  read -ra as_opts <<<"${opt[as]} -I$ST_SUITE -I${src%/*}"
   read -ra ld_opts <<<"${opt[ld]}"
   read -ra cc_opts <<<"${opt[cc]}"
   read -ra sim_opts <<<"${opt[sim]}"

@@ -14,53 +14,7 @@
 
 	.include "testutils.inc"
 
-	# bfin gas leaves symbols in instruction operands to the linker, which cannot fold
-	# them; %() in alternate macro mode turns an expression into its number first.
-	.macro ldc reg:req, val:req
-	.altmacro
-	_ldc \reg, %(\val)
-	.noaltmacro
-	.endm
-	.macro _ldc reg:req, val:req
-	imm32 \reg, \val
-	.endm
-	.macro chkc reg:req, val:req
-	.altmacro
-	_chkc \reg, %(\val)
-	.noaltmacro
-	.endm
-	.macro _chkc reg:req, val:req
-	CHECKREG \reg, \val
-	.endm
-	.macro mmr16 base:req, off:req, val:req
-	ldc R0, \val
-	W[\base\() + \off\()] = R0;
-	.endm
-	.macro mmr32 base:req, off:req, val:req
-	ldc R0, \val
-	[\base\() + \off\()] = R0;
-	.endm
-	# Expect the 16-bit MMR at base+off to read val.
-	.macro chk16 base:req, off:req, val:req
-	R0 = W[\base\() + \off\()] (Z);
-	chkc R0, \val
-	.endm
-	.macro chk32 base:req, off:req, val:req
-	R0 = [\base\() + \off\()];
-	chkc R0, \val
-	.endm
-	# Poll the destination's DMA_DONE, giving up after a million reads.
-	.macro wait_done base:req
-	imm32 R1, 1000000
-1:	R0 = W[\base\() + 0x28] (Z);
-	CC = BITTST (R0, 0);
-	IF CC JUMP 2f;
-	R1 += -1;
-	CC = R1 == 0;
-	IF !CC JUMP 1b;
-	dbg_fail
-2:
-	.endm
+	.include "mdma.inc"
 
 	.equ SRC, 0x00200000	/* 160x120 frame, 16 bits a pixel, in SDRAM */
 	.equ DST, 0xFF900000	/* L1 data bank B */
