@@ -7,6 +7,10 @@
 #   --prefix DIR  toolchain prefix (default: what emu/bootstrap.sh --print-prefix prints)
 #   -j N          run N tests at once (default: nproc)
 #   -v            print every test's result, and the commands and output of failing ones
+#   --sim-options OPTS
+#                 add OPTS to every simulator run, after the test's own '# sim:' options (for
+#                 example '--timing bf537': the suite under the BF537 timing model; the
+#                 tests listed in emu/sim_testsuite.l1code then run from L1 instruction SRAM)
 #   TEST...       test file names in the suite (shell patterns allowed, e.g. 'c_dsp32*'),
 #                 or paths to test files; default: the whole suite
 #
@@ -25,7 +29,7 @@ xfail_file="$here/sim_testsuite.xfail"
 die() { printf '%s: %s\n' "$me" "$*" >&2; exit 2; }
 die_usage() { die "$* (try --help)"; }
 
-prefix="" jobs="" verbose=0 args=()
+prefix="" jobs="" verbose=0 sim_extra="" args=()
 while (($#)); do
   case $1 in
     -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "${BASH_SOURCE[0]}"; exit 0 ;;
@@ -35,6 +39,8 @@ while (($#)); do
     -j*) jobs=${1#-j} ;;
     --jobs=*) jobs=${1#--jobs=} ;;
     -v|--verbose) verbose=1 ;;
+    --sim-options) (($# >= 2)) || die_usage "--sim-options needs a value"; sim_extra=$2; shift ;;
+    --sim-options=*) sim_extra=${1#--sim-options=} ;;
     --) shift; args+=("$@"); break ;;
     -*) die_usage "unknown option '$1'" ;;
     *) args+=("$1") ;;
@@ -102,6 +108,23 @@ if [[ -f $xfail_file ]]; then
     [[ -f $suite/${BASH_REMATCH[1]} ]] || die "$xfail_file:$n: no test '${BASH_REMATCH[1]}' in the suite"
     xfail[${BASH_REMATCH[1]}]=${BASH_REMATCH[2]}
   done <"$xfail_file"
+fi
+
+# Under a timing model, the tests in sim_testsuite.l1code ("<test file>  <reason>") are linked
+# with their code in L1 instruction SRAM, where a core fetches at full speed, as their
+# expectations assume (the reasons are in the file).
+l1code=" "
+l1code_file="$here/sim_testsuite.l1code"
+if [[ $sim_extra =~ --timing[=[:space:]]+bf537 && -f $l1code_file ]]; then
+  n=0
+  while IFS= read -r line || [[ -n $line ]]; do
+    n=$((n + 1))
+    [[ $line =~ ^[[:space:]]*(#|$) ]] && continue
+    [[ $line =~ ^([^[:space:]]+)[[:space:]]+([^[:space:]].*)$ ]] ||
+      die "$l1code_file:$n: want '<test file> <reason>', got '$line'"
+    [[ -f $suite/${BASH_REMATCH[1]} ]] || die "$l1code_file:$n: no test '${BASH_REMATCH[1]}' in the suite"
+    l1code+="${BASH_REMATCH[1]} "
+  done <"$l1code_file"
 fi
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/sim_testsuite.XXXXXX") || exit 2
@@ -262,8 +285,9 @@ run_test() {
   # A test of ours may include files beside it (emu/tests/dma/mdma.inc).
   read -ra as_opts <<<"${opt[as]} -I$ST_SUITE -I${src%/*}"
   read -ra ld_opts <<<"${opt[ld]}"
+  [[ $ST_L1CODE == *" ${src##*/} "* ]] && ld_opts+=(-Ttext=0xFFA00000)
   read -ra cc_opts <<<"${opt[cc]}"
-  read -ra sim_opts <<<"${opt[sim]}"
+  read -ra sim_opts <<<"${opt[sim]} $ST_SIM_EXTRA"
   read -ra prog_opts <<<"${opt[progopts]}"
   # sim-defs.exp means to pass every as/ld option through gcc with -Wa,/-Wl, (its regsub
   # lacks -all, so it only prefixes the first; no test has more than one).
@@ -340,7 +364,7 @@ run_test() {
 }
 
 # A test takes well under a second; the limit is only there to stop a hang.
-export ST_WORK=$work ST_SUITE=$suite ST_PREFIX=$prefix ST_TIMEOUT=60
+export ST_WORK=$work ST_SUITE=$suite ST_PREFIX=$prefix ST_TIMEOUT=60 ST_SIM_EXTRA=$sim_extra ST_L1CODE=$l1code
 export -f run_test run_logged tcl_glob_to_bash one_line
 
 start=$SECONDS
