@@ -67,10 +67,18 @@ CheckCall flow_call(const FrameInput &in, Params &prm) {
   c.inout("state", std::vector<uint8_t>(size_t(BVB_FLOW_AVOID_STATE_BYTES(w, rows, s)), 0), View{4, true});
   c.bufs[kState].persistent = true;
   c.out("result", sizeof(bvb_pipe_result), View{4, true});
-  // Coefficients and flow fields are frame-sized (6 + 4 + 4 bytes per pixel of the band): SDRAM.
+  // Coefficients and flow fields take 6 + 4 + 4 bytes per pixel of the scaled band (9 KB at
+  // 160x120 with s = 4): the frame arrives in SDRAM, these go to L1 when they fit, as firmware
+  // on the robot would place them (at s = 1 they are frame-sized and stay in SDRAM). The
+  // coefficients and the flow fields in different banks: hs_iterate reads both every pixel.
   c.scratch("coef", size_t(BVB_FLOW_AVOID_COEF_BYTES(w, rows, s)));
   c.scratch("flow_a", size_t(BVB_FLOW_AVOID_FLOW_BYTES(w, rows, s)));
   c.scratch("flow_b", size_t(BVB_FLOW_AVOID_FLOW_BYTES(w, rows, s)));
+  pipe::Placer pl;
+  c.bufs[kCoef].place = pl.place(c.bufs[kCoef], {BVB_PLACE_L1A, BVB_PLACE_L1B});
+  c.bufs[kFlowA].place = pl.place(c.bufs[kFlowA], {BVB_PLACE_L1B, BVB_PLACE_L1A});
+  c.bufs[kFlowB].place = pl.place(c.bufs[kFlowB], {BVB_PLACE_L1B, BVB_PLACE_L1A});
+  c.bufs[kState].place = pl.place(c.bufs[kState], {BVB_PLACE_L1A, BVB_PLACE_L1B});
   c.buf(kFrame).word(w).word(h).word(w).buf(kInfo).buf(kParams).buf(kState).buf(kResult);
   c.buf(kCoef).buf(kFlowA).buf(kFlowB);
   c.host = [=](HostBuffers &m) {
