@@ -17,6 +17,7 @@
 
 #include "bvb/add_sat.h"
 #include "io.h"
+#include "tempdir.h"
 
 namespace bvb {
 namespace {
@@ -26,7 +27,8 @@ struct CliRun {
   std::string out, err;
 };
 
-std::string dir() { return testing::TempDir(); }
+// Each test its own directory (tempdir.h): the files below have fixed names.
+std::string dir() { return test_dir(); }
 
 CliRun bfbench(const std::string &args, const std::string &env = "") {
   // Per process: ctest runs this file's tests in parallel.
