@@ -3,6 +3,7 @@
 // and the checks that judge nothing say so. Host-only: calls are generated, not run.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <set>
 
 #include "bench.h"
@@ -84,6 +85,37 @@ TEST(Coverage, EveryAssemblyKernelHasABenchCallAndBudgetRows) {
     const KernelInfo *k = Registry::product().find(kv.first);
     EXPECT_TRUE(k && k->has_asm) << "ci/budgets.json budgets " << kv.first << ", which has no assembly";
   }
+}
+
+// The probe: harris_nms, lk_track and Horn-Schunck benched on crops of ../shared/frames-real and
+// on a synthetic substitute without it (harris_nms 160x120: 278,439 cycles against a budget of
+// 65,368). Every bench call must be the same bytes whether the frames are there or not.
+TEST(Coverage, BenchInputsDoNotDependOnFilesOutsideTheRepository) {
+  auto bench_calls = [] {
+    std::map<std::string, std::string> out;
+    for (const Family *f : families()) {
+      if (!f->bench_call) continue;
+      for (const auto &k : f->kernels)
+        for (Size s : {Size{160, 120}, Size{320, 240}}) {
+          Rng rng(1 ^ (uint64_t(s.w) << 20) ^ uint64_t(s.h));  // as run_bench seeds it
+          CheckCall c = f->bench_call(k, s.w, s.h, rng);
+          if (!c.kernel.empty()) out[k + "/" + c.case_name] = testing_gen::fingerprint(c);
+        }
+    }
+    return out;
+  };
+  const char *old = std::getenv("BFBENCH_FRAMES_REAL");
+  const std::string saved = old ? old : "";
+  setenv("BFBENCH_FRAMES_REAL", "/nonexistent/frames-real", 1);
+  const auto without = bench_calls();
+  if (old) setenv("BFBENCH_FRAMES_REAL", saved.c_str(), 1);
+  else unsetenv("BFBENCH_FRAMES_REAL");
+  if (!frames_real_present(default_frames_real())) GTEST_SKIP() << frames_missing_message(default_frames_real());
+  const auto with = bench_calls();
+  ASSERT_EQ(with.size(), without.size());
+  for (const auto &kv : with)
+    EXPECT_TRUE(without.count(kv.first) && without.at(kv.first) == kv.second)
+        << kv.first << ": the bench call differs without ../shared/frames-real";
 }
 
 // A registry entry with assembly and no family (the probe: it used to give "all 0 calls
