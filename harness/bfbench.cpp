@@ -190,9 +190,9 @@ void print_check_report(const Checker &ck, size_t max_per_kernel) {
       hidden_of[key] = {f.kernel, f.impl};
       continue;
     }
-    std::printf("FAILED %s (%s) %s, seed %u: %s: %s\n", f.kernel.c_str(), f.impl.c_str(),
-                f.case_name.c_str(), f.seed, failure_kind_name(f.kind), f.message.c_str());
-    std::printf("  replay: bfbench check -k %s --seed %u\n", f.kernel.c_str(), f.seed);
+    std::printf("FAILED %s (%s) %s, seed %u, case %s: %s: %s\n", f.kernel.c_str(), f.impl.c_str(),
+                f.case_name.c_str(), f.seed, f.case_id.c_str(), failure_kind_name(f.kind), f.message.c_str());
+    std::printf("  replay: %s\n", replay_command(f).c_str());
   }
   // Say what was left out and how to see it, rather than stopping silently at the first few.
   for (const auto &kv : hidden_of)
@@ -203,7 +203,7 @@ void print_check_report(const Checker &ck, size_t max_per_kernel) {
 int cmd_check(Args &args) {
   if (help_requested(args,
                      "usage: bfbench check [-k GLOB] [--seed N] [--seeds COUNT] [-j N] [--campaign]\n"
-                     "                     [--timing none|bf537] [--firmware ELF] [-v]\n\n"
+                     "                     [--case KERNEL:N] [--timing none|bf537] [--firmware ELF] [-v]\n\n"
                      "Runs every kernel's C reference on the Blackfin and its assembly in the simulator\n"
                      "on seeded random, crafted and real frames over many sizes, and compares both with\n"
                      "the host-compiled C reference, bit for bit; guard bands, callee-saved registers,\n"
@@ -212,7 +212,12 @@ int cmd_check(Args &args) {
                      "  --seed N      first seed (default: from the clock)\n"
                      "  --seeds COUNT seeds N, N+1, ... (default 1)\n"
                      "  -j N          simulator processes at once (default: cores)\n"
-                     "  --campaign    larger sizes (up to 640x480) and more random cases\n"))
+                     "  --campaign    larger sizes (up to 640x480) and more random cases\n"
+                     "  --case ID     only the call ID (KERNEL:N, as a failure prints it), with its seed\n"
+                     "Fails (exit 1) when a selected kernel gets no judged call for one of its\n"
+                     "implementations. Real-frame cases need $BFBENCH_FRAMES_REAL (default\n"
+                     "../shared/frames-real): without it they are skipped, with a message, or with\n"
+                     "BVB_REQUIRE_FRAMES=1 the check stops with an error.\n"))
     return 0;
   CheckOptions opts;
   opts.kernel_glob = args.value("-k", "*", "--kernel");
@@ -224,14 +229,31 @@ int cmd_check(Args &args) {
   opts.verbose = args.flag("-v");
   opts.progress = isatty(2);
   opts.frames_real = default_frames_real();
+  opts.only_case = args.value("--case", "");
   Target target = make_target(args);
   args.positional();
 
+  if (!opts.only_case.empty()) {
+    // KERNEL:N names one call; the kernel selects its family, as -k would.
+    const size_t colon = opts.only_case.rfind(':');
+    const std::string kernel = colon == std::string::npos ? "" : opts.only_case.substr(0, colon);
+    const std::string n = colon == std::string::npos ? "" : opts.only_case.substr(colon + 1);
+    if (kernel.empty() || n.empty() || n.find_first_not_of("0123456789") != std::string::npos)
+      throw Usage("--case wants KERNEL:N as a failure prints it, got '" + opts.only_case + "'");
+    target.registry().get(kernel);
+    if (opts.kernel_glob != "*" && !glob_match(opts.kernel_glob, kernel))
+      throw Usage("--case " + opts.only_case + " is not of a kernel -k '" + opts.kernel_glob + "' selects");
+    opts.kernel_glob = kernel;
+    if (seed.empty()) throw Usage("--case needs the --seed the failure printed");
+  }
   bool any = false;
   for (const auto &k : target.registry().kernels()) any |= glob_match(opts.kernel_glob, k.name);
   if (!any) throw InputError("no kernel matches '" + opts.kernel_glob + "' (bfbench list)");
+  if (!frames_real_present(opts.frames_real) && frames_required())
+    throw InputError(frames_missing_message(opts.frames_real));
 
-  size_t failures = 0, calls = 0;
+  size_t failures = 0, calls = 0, host_failures = 0;
+  std::vector<std::string> gaps;
   for (long s = 0; s < seeds; ++s) {
     CheckOptions o = opts;
     o.seed = opts.seed + uint32_t(s);
@@ -246,12 +268,25 @@ int cmd_check(Args &args) {
     }
     std::printf("seed %u:\n", o.seed);
     print_check_report(ck, opts.verbose ? 1000 : 3);
-    // Calls that failed, not failure records: one call can fail several ways at once.
+    for (const auto &kv : ck.skipped_real())
+      std::printf("  %s: %s\n", kv.first.c_str(), frames_missing_message(o.frames_real).c_str());
+    // Calls that failed, not failure records: one call can fail several ways at once. The host
+    // reference's runs are judged (its inputs) but are not calls on the Blackfin.
     for (const auto &kv : ck.tally())
-      for (const auto &it : kv.second) calls += it.second.calls, failures += it.second.failed;
+      for (const auto &it : kv.second) {
+        if (it.first == "host") host_failures += it.second.failed;
+        else calls += it.second.calls, failures += it.second.failed;
+      }
+    if (s == 0) gaps = ck.coverage_gaps();
   }
-  if (failures) {
-    std::printf("%zu of %zu calls failed\n", failures, calls);
+  // A kernel, or one of its implementations, that no call reached was not checked at all: that
+  // is no pass (a registry entry without a family, a family that forgets a kernel, a --case that
+  // names no call).
+  for (const auto &g : gaps) std::printf("NOT CHECKED %s: no call judged\n", g.c_str());
+  if (failures || host_failures || !gaps.empty()) {
+    if (failures || host_failures) std::printf("%zu of %zu calls failed\n", failures, calls);
+    if (host_failures) std::printf("%zu host reference runs failed (they wrote their inputs)\n", host_failures);
+    if (!gaps.empty()) std::printf("%zu kernel implementations not checked\n", gaps.size());
     return 1;
   }
   std::printf("all %zu calls bit-exact, guards intact, ABI kept\n", calls);
@@ -485,7 +520,7 @@ int cmd_budgets(Args &args) {
       if (v.status == BudgetVerdict::Failed) return 1;
     return 0;
   }
-  int bad = 0;
+  int bad = 0, loose = 0;
   for (const auto &v : verdicts) {
     const char *st = "ok";
     switch (v.status) {
@@ -495,11 +530,29 @@ int cmd_budgets(Args &args) {
       case BudgetVerdict::Unmeasured: st = "BUDGET FOR NOTHING MEASURED"; ++bad; break;
       case BudgetVerdict::Failed: st = "FAILED CHECK"; ++bad; break;
     }
-    std::printf("%-40s budget %12llu  measured %12llu  %s\n", v.key.c_str(), (unsigned long long)v.budget,
-                (unsigned long long)v.measured, st);
+    char slack[64] = "";
+    if (double pct = budget_slack_pct(v)) {
+      std::snprintf(slack, sizeof slack, "  (loose: %.1f%% above measured)", pct);
+      ++loose;
+    }
+    std::printf("%-40s budget %12llu  measured %12llu  %s%s\n", v.key.c_str(), (unsigned long long)v.budget,
+                (unsigned long long)v.measured, st, slack);
     if (v.status == BudgetVerdict::Failed) std::printf("  %s\n", v.detail.c_str());
   }
-  std::printf("%zu budgets, %d problems (%s)\n", verdicts.size(), bad, path.c_str());
+  // An assembly kernel that no row measured was not judged: that is no pass.
+  std::vector<std::string> asm_kernels;
+  for (const auto &k : target.registry().kernels())
+    if (k.has_asm) asm_kernels.push_back(k.name);
+  const std::vector<std::string> unjudged = unjudged_kernels(asm_kernels, opts.kernel_glob, verdicts);
+  for (const auto &k : unjudged) std::printf("%-40s NOT JUDGED: no bench call measured it\n", k.c_str());
+  bad += int(unjudged.size());
+  std::printf("%zu budgets, %d problems", verdicts.size(), bad);
+  if (loose) std::printf(", %d loose by more than 2%% (bfbench budgets --update -k KERNEL tightens them)", loose);
+  std::printf(" (%s)\n", path.c_str());
+  if (verdicts.empty()) {
+    std::printf("no budget judged\n");
+    return 1;
+  }
   return bad ? 1 : 0;
 }
 

@@ -13,6 +13,7 @@
 #include "flow/flow_metrics.h"
 #include "flow/hs_accuracy.h"
 #include "flow/hs_double.h"
+#include "frames.h"
 #include "io.h"
 
 namespace {
@@ -318,6 +319,7 @@ TEST(HornSchunckFlow, AgreesWithDoubleOnSyntheticMotion) {
 // N = 100 table comes from hs_accuracy_table through the CLI.
 TEST(HornSchunckAccuracy, FixedWithin002PxOfDoubleOnGroundTruthSequences) {
   const std::string dir = BVB_FRAMES_REAL;
+  BVB_NEED_REAL_FRAMES(dir);
   auto check = [](const std::vector<bvb::HsAccuracyRow> &rows, int n) {
     for (const bvb::HsAccuracyRow &r : rows) {
       EXPECT_LE(r.fixed_vs_double.mean, 0.02) << r.sequence << " N=" << n;
@@ -336,6 +338,7 @@ TEST(HornSchunckAccuracy, FixedWithin002PxOfDoubleOnGroundTruthSequences) {
 // closer to the ground truth than zero flow is.
 TEST(HornSchunckAccuracy, EstimateBeatsZeroFlow) {
   const std::string dir = BVB_FRAMES_REAL;
+  BVB_NEED_REAL_FRAMES(dir);
   for (const auto &row : bvb::hs_accuracy_table(dir, kAlpha2, 10, {"RubberWhale", "Yosemite"})) {
     const bvb::HsSequence *seq = nullptr;
     for (const auto &s : bvb::hs_ground_truth_sequences())

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "flow/hs_accuracy_cli.h"
+#include "frames.h"
 #include "io.h"
 
 namespace {
@@ -46,12 +47,8 @@ TEST(HsAccuracyCli, HelpAndUsageErrors) {
 // length of the known ground-truth vectors and AE the mean of atan(|truth|) in degrees.
 TEST(HsAccuracyCli, ZeroIterationsGiveTheGroundTruthStatistics) {
   const std::string dir = BVB_FRAMES_REAL;
-  bvb::FlowField truth;
-  try {
-    truth = bvb::read_flo(dir + "/Yosemite/flow9.flo");
-  } catch (const bvb::InputError &) {
-    GTEST_SKIP() << "frames-real not available";
-  }
+  BVB_NEED_REAL_FRAMES(dir);
+  const bvb::FlowField truth = bvb::read_flo(dir + "/Yosemite/flow9.flo");
   double sum_len = 0, sum_ang = 0;
   long n = 0;
   for (size_t p = 0; p < truth.u.size(); ++p) {

@@ -24,11 +24,10 @@ CheckCall add_sat_call(int w, int h, int sstride, int dstride, std::vector<uint8
 }
 
 void check(Checker &ck) {
-  if (!ck.wants("add_sat_u8")) return;
   Rng &rng = ck.rng();
   for (Size s : check_sizes(1, 1, rng, ck.options().campaign)) {
-    for (Pattern pa : all_patterns()) {
-      const Pattern pb = all_patterns()[rng.uniform(0, int(all_patterns().size()) - 1)];
+    for (Pattern pa : ck.patterns()) {
+      const Pattern pb = ck.patterns()[rng.uniform(0, int(ck.patterns().size()) - 1)];
       const int ss = pick_stride(s.w, rng), ds = pick_stride(s.w, rng);
       std::string name = std::to_string(s.w) + "x" + std::to_string(s.h) + " strides " +
                          std::to_string(ss) + "/" + std::to_string(ds) + " " + pattern_name(pa) + "+" +

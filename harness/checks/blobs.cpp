@@ -165,11 +165,10 @@ bvb_blob_params robot_params() {
 }
 
 void check(Checker &ck) {
-  if (!ck.wants("blobs_uyvy")) return;
   Rng &rng = ck.rng();
   for (Size s0 : check_sizes(2, 1, rng, ck.options().campaign)) {
     const Size s{s0.w + (s0.w & 1), s0.h};
-    for (Pattern pat : all_patterns()) {
+    for (Pattern pat : ck.patterns()) {
       const int stride = pick_stride(2 * s.w, rng);
       bvb_blob_params prm{};
       prm.nclasses = rng.uniform(1, 8);
@@ -193,8 +192,8 @@ void check(Checker &ck) {
       }
       if (packed.empty()) {
         // Y, U and V planes from the crafted patterns.
-        const Pattern pu = all_patterns()[rng.uniform(0, int(all_patterns().size()) - 1)];
-        const Pattern pv = all_patterns()[rng.uniform(0, int(all_patterns().size()) - 1)];
+        const Pattern pu = ck.patterns()[rng.uniform(0, int(ck.patterns().size()) - 1)];
+        const Pattern pv = ck.patterns()[rng.uniform(0, int(ck.patterns().size()) - 1)];
         const std::string &fr = ck.options().frames_real;
         packed = interleave(make_plane(pat, s.w, s.h, s.w, rng, fr), make_plane(pu, s.w / 2, s.h, s.w / 2, rng, fr),
                             make_plane(pv, s.w / 2, s.h, s.w / 2, rng, fr), s.w, s.h);

@@ -103,11 +103,10 @@ void place_buffers(Checker &ck, CheckCall &c, Rng &rng) {
 }
 
 void check(Checker &ck) {
-  if (!ck.wants("canny")) return;
   Rng &rng = ck.rng();
   const bool campaign = ck.options().campaign;
   for (Size s : check_sizes(1, 1, rng, campaign)) {
-    for (Pattern pat : all_patterns()) {
+    for (Pattern pat : ck.patterns()) {
       const int ss = pick_stride(s.w, rng), gs = pick_stride(s.w, rng), es = pick_stride(s.w, rng);
       Gradients g;
       std::string src;

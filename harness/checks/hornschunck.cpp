@@ -38,18 +38,29 @@ double sample(const Image &img, double x, double y) {
          fy * ((1 - fx) * img.at(x0, y1) + fx * img.at(x1, y1));
 }
 
-// A textured grey image: a crop of a real frame, or smooth noise when the frames are absent.
-Image texture(int w, int h, Rng &rng, const std::string &frames_real) {
+// A crop of a real frame (the caller has made sure the frames are there).
+Image real_texture(int w, int h, Rng &rng, const std::string &frames_real) {
   Image img = real_crop(frames_real, w, h, rng);
-  if (!img.data.empty()) return img;
-  img = Image(w, h);
-  const double fx = 0.05 + 0.3 * (rng.u32() / 4294967296.0), fy = 0.05 + 0.3 * (rng.u32() / 4294967296.0);
-  const double p = rng.u32() / 4294967296.0 * 6.283;
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      img.at(x, y) = uint8_t(std::lround(127.5 + 60 * std::sin(fx * x + p) * std::cos(fy * y - p) +
-                                         20 * (rng.u32() / 4294967296.0 - 0.5)));
+  if (img.data.empty()) throw std::logic_error("hornschunck: a real-frame pair without the frames");
   return img;
+}
+
+// Frame 2 of a warp of the integer texture (hermetic_texture_at): the texture sampled along a
+// translation (tx, ty in 1/256 px), rotation (mrad) and zoom (permille) about the centre, in
+// integers only, so the pair (and the bench's cycles on it) is the same on every host. cos and
+// sin of the small angle are their Taylor polynomials in Q16.
+Image warped_texture(int w, int h, uint64_t seed, int64_t tx, int64_t ty, int64_t rot, int64_t zoom) {
+  const int64_t c = 65536 - rot * rot * 65536 / 2000000, s = rot * 65536 / 1000 - rot * rot * rot * 65536 / 6000000000LL;
+  const int64_t cx = int64_t(w - 1) * 128, cy = int64_t(h - 1) * 128;  // the centre in 1/256 px
+  Image b(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      // I2(x) = I1(x - d(x)): the content moves by about (tx, ty) plus the rotation and zoom.
+      const int64_t dx = int64_t(x) * 256 - cx, dy = int64_t(y) * 256 - cy;
+      const int64_t rx = (dx * c + dy * s) / 65536 * 1000 / zoom, ry = (-dx * s + dy * c) / 65536 * 1000 / zoom;
+      b.at(x, y) = hermetic_texture_at(cx + rx - tx, cy + ry - ty, seed);
+    }
+  return b;
 }
 
 std::vector<uint8_t> to_plane(const Image &img, int stride, Rng &rng) {
@@ -61,15 +72,27 @@ std::vector<uint8_t> to_plane(const Image &img, int stride, Rng &rng) {
 }
 
 // Frame pairs: frame 2 is frame 1 moved (so the flow means something), unrelated noise, crafted
-// patterns, or opposite extremes that drive every derivative to its limit.
-enum class PairKind { Warp, Shift, Noise, Patterns, Saturate, Count };
+// patterns, or opposite extremes that drive every derivative to its limit. Warp and Shift move
+// the integer texture; RealWarp moves a crop of a real frame and needs the frames.
+enum class PairKind { Warp, Shift, Noise, Patterns, Saturate, RealWarp, Count };
 
-FramePair make_pair(PairKind kind, int w, int h, int stride, Rng &rng, const std::string &frames_real) {
+// ck: the check's (for its patterns and frames), or null for the bench's hermetic pairs.
+FramePair make_pair(PairKind kind, int w, int h, int stride, Rng &rng, Checker *ck) {
   FramePair p;
+  const std::string frames_real = ck ? ck->options().frames_real : "";
   switch (kind) {
     case PairKind::Warp: {
+      const uint64_t seed = rng.next();
+      const int tx = rng.uniform(-768, 768), ty = rng.uniform(-768, 768);
+      const int rot = rng.uniform(-30, 30), zoom = 1000 + rng.uniform(-30, 30);
+      p.f1 = to_plane(hermetic_texture(w, h, seed), stride, rng);
+      p.f2 = to_plane(warped_texture(w, h, seed, tx, ty, rot, zoom), stride, rng);
+      p.name = "warp";
+      break;
+    }
+    case PairKind::RealWarp: {
       // Frame 2 samples frame 1 along a smooth motion: translation, rotation and zoom.
-      const Image a = texture(w, h, rng, frames_real);
+      const Image a = real_texture(w, h, rng, frames_real);
       const double tx = rng.uniform(-300, 300) / 100.0, ty = rng.uniform(-300, 300) / 100.0;
       const double rot = rng.uniform(-30, 30) / 1000.0, zoom = 1 + rng.uniform(-30, 30) / 1000.0;
       Image b(w, h);
@@ -84,13 +107,13 @@ FramePair make_pair(PairKind kind, int w, int h, int stride, Rng &rng, const std
         }
       p.f1 = to_plane(a, stride, rng);
       p.f2 = to_plane(b, stride, rng);
-      p.name = "warp";
+      p.name = "real warp";
       break;
     }
     case PairKind::Shift: {
       // Two windows of one larger texture, an integer number of pixels apart.
       const int dx = rng.uniform(-4, 4), dy = rng.uniform(-4, 4);
-      const Image big = texture(w + 8, h + 8, rng, frames_real);
+      const Image big = hermetic_texture(w + 8, h + 8, rng.next());
       Image a(w, h), b(w, h);
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
@@ -108,7 +131,8 @@ FramePair make_pair(PairKind kind, int w, int h, int stride, Rng &rng, const std
       p.name = "noise";
       break;
     case PairKind::Patterns: {
-      const auto &all = all_patterns();
+      if (!ck) throw std::logic_error("hornschunck: pattern pairs are for checks");
+      const auto &all = ck->patterns();
       const Pattern pa = all[rng.uniform(0, int(all.size()) - 1)];
       const Pattern pb = all[rng.uniform(0, int(all.size()) - 1)];
       p.f1 = make_plane(pa, w, h, stride, rng, frames_real);
@@ -155,7 +179,7 @@ std::vector<uint8_t> as_bytes(const std::vector<int16_t> &v) {
 
 // Coefficients for the iterate checks: the C prepare on a frame pair (what the kernel really
 // sees), or any int16 values (the iteration's arithmetic is defined for all of them).
-std::vector<int16_t> make_coef(int w, int h, Rng &rng, const std::string &frames_real, std::string *name) {
+std::vector<int16_t> make_coef(int w, int h, Rng &rng, Checker &ck, std::string *name) {
   std::vector<int16_t> coef(BVB_HS_COEF_BYTES(w, h) / 2);
   const int kind = rng.uniform(0, 3);
   if (kind == 0) {
@@ -167,7 +191,9 @@ std::vector<int16_t> make_coef(int w, int h, Rng &rng, const std::string &frames
     *name = "coef extremes";
   } else {
     const int stride = pick_stride(w, rng);
-    FramePair p = make_pair(PairKind(rng.uniform(0, int(PairKind::Count) - 1)), w, h, stride, rng, frames_real);
+    // Any pair kind; a real frame's only when the frames are there (the name says which).
+    const int kinds = int(PairKind::Count) - (ck.have_frames() ? 0 : 1);
+    FramePair p = make_pair(PairKind(rng.uniform(0, kinds - 1)), w, h, stride, rng, &ck);
     bvb_hs_prepare_c(p.f1.data(), p.f2.data(), w, h, stride, pick_alpha2(rng), coef.data());
     *name = "coef " + p.name;
   }
@@ -267,7 +293,6 @@ int flow_stride(int w, Rng &rng) { return pick_stride(4 * w, rng, 4); }
 
 void check(Checker &ck) {
   Rng &rng = ck.rng();
-  const std::string &real = ck.options().frames_real;
   const bool campaign = ck.options().campaign;
   const std::vector<Size> sizes = check_sizes(BVB_HS_MIN_DIM, BVB_HS_MIN_DIM, rng, campaign);
   std::vector<Size> small = sizes;
@@ -276,11 +301,18 @@ void check(Checker &ck) {
   // left over, odd/even width).
   for (int w = 2; w <= 25; ++w) small.push_back({w, rng.uniform(2, 6)});
 
-  if (ck.wants("hs_prepare")) {
+  // Every kernel's cases are generated whatever -k says (Checker::add filters).
+  auto skip = [&](int k) {
+    if (PairKind(k) != PairKind::RealWarp || ck.have_frames()) return false;
+    ck.skip_real();
+    return true;
+  };
+  {
     for (Size s : small)
       for (int k = 0; k < int(PairKind::Count); ++k) {
+        if (skip(k)) continue;
         const int stride = pick_stride(s.w, rng);
-        FramePair p = make_pair(PairKind(k), s.w, s.h, stride, rng, real);
+        FramePair p = make_pair(PairKind(k), s.w, s.h, stride, rng, &ck);
         const int32_t a2 = pick_alpha2(rng);
         CheckCall c = prepare_call(s.w, s.h, stride, p, a2,
                                    size_name(s.w, s.h) + " stride " + std::to_string(stride) + " " + p.name +
@@ -289,11 +321,11 @@ void check(Checker &ck) {
         ck.add(std::move(c));
       }
   }
-  if (ck.wants("hs_iterate")) {
+  {
     for (Size s : small)
       for (int k = 0; k < 4; ++k) {
         std::string cn, fn;
-        const std::vector<int16_t> coef = make_coef(s.w, s.h, rng, real, &cn);
+        const std::vector<int16_t> coef = make_coef(s.w, s.h, rng, ck, &cn);
         const int is = flow_stride(s.w, rng), os = flow_stride(s.w, rng);
         const std::vector<int16_t> uv = make_flow(s.w, s.h, is, rng, &fn);
         CheckCall c = iterate_call(s.w, s.h, coef, uv, is, os,
@@ -303,11 +335,12 @@ void check(Checker &ck) {
         ck.add(std::move(c));
       }
   }
-  if (ck.wants("hornschunck")) {
+  {
     for (Size s : sizes)
       for (int k = 0; k < int(PairKind::Count); ++k) {
+        if (skip(k)) continue;
         const int stride = pick_stride(s.w, rng), os = flow_stride(s.w, rng);
-        FramePair p = make_pair(PairKind(k), s.w, s.h, stride, rng, real);
+        FramePair p = make_pair(PairKind(k), s.w, s.h, stride, rng, &ck);
         const int32_t a2 = pick_alpha2(rng);
         // Up to 10 iterations on small frames; large ones keep the simulator time reasonable.
         static const int counts[] = {0, 1, 2, 3, 10};
@@ -324,7 +357,8 @@ void check(Checker &ck) {
 }
 
 CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
-  FramePair p = make_pair(PairKind::Warp, w, h, w, rng, default_frames_real());
+  // The integer texture warped: the same bytes, and so the same cycles, on every host.
+  FramePair p = make_pair(PairKind::Warp, w, h, w, rng, nullptr);
   if (kernel == "hs_prepare") return prepare_call(w, h, w, p, 1024, size_name(w, h));
   if (kernel == "hs_iterate") {
     std::vector<int16_t> coef(BVB_HS_COEF_BYTES(w, h) / 2);

@@ -161,11 +161,11 @@ void check(Checker &ck) {
   Rng &rng = ck.rng();
   const std::string &real = ck.options().frames_real;
   const bool campaign = ck.options().campaign;
-  if (ck.wants("ncc_match")) {
+  {
     for (Size sz : check_sizes(1, 1, rng, campaign)) {
       // Few patterns on large frames: the C reference costs about a thousand cycles per candidate.
       const bool big = sz.w * sz.h > 40000;
-      for (Pattern p : all_patterns()) {
+      for (Pattern p : ck.patterns()) {
         if (big && rng.uniform(0, 3)) continue;
         int r, s;
         pick_rs(sz.w, sz.h, rng, r, s);
@@ -183,7 +183,7 @@ void check(Checker &ck) {
           fr.f2 = moved(fr, tx, ty, noise, rng);
           how = "moved " + std::to_string(tx) + "," + std::to_string(ty) + " noise " + std::to_string(noise);
         } else if (kind == 4) {
-          const Pattern q = all_patterns()[rng.uniform(0, int(all_patterns().size()) - 1)];
+          const Pattern q = ck.patterns()[rng.uniform(0, int(ck.patterns().size()) - 1)];
           fr.f2 = make_plane(q, sz.w, sz.h, fr.stride, rng, real);
           how = std::string("vs ") + pattern_name(q);
         } else {
@@ -227,6 +227,10 @@ void check(Checker &ck) {
       fr.h = rng.uniform(50, 120);
       fr.stride = pick_stride(fr.w, rng);
       const Pattern p = rng.uniform(0, 1) ? Pattern::Real : Pattern::Noise;
+      if (p == Pattern::Real && !ck.have_frames()) {
+        ck.skip_real();
+        continue;
+      }
       fr.f1 = make_plane(p, fr.w, fr.h, fr.stride, rng, real);
       fr.f2 = moved(fr, rng.uniform(-3, 3), rng.uniform(-3, 3), 4, rng);
       auto pts = pick_points(fr.w, fr.h, 5, s, s == 10 ? 10 : 16, rng);
@@ -252,10 +256,10 @@ void check(Checker &ck) {
       ck.add(std::move(c));
     }
   }
-  if (ck.wants("ncc_scoremap")) {
+  {
     for (Size sz : check_sizes(1, 1, rng, campaign)) {
       for (int i = 0; i < 3; ++i) {
-        const Pattern p = all_patterns()[rng.uniform(0, int(all_patterns().size()) - 1)];
+        const Pattern p = ck.patterns()[rng.uniform(0, int(ck.patterns().size()) - 1)];
         int r, s;
         pick_rs(sz.w, sz.h, rng, r, s);
         Frames fr;

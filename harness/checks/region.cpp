@@ -58,7 +58,7 @@ constexpr int kTol = 20;
 void check_grow(Checker &ck) {
   Rng &rng = ck.rng();
   for (Size s : check_sizes(1, 1, rng, ck.options().campaign)) {
-    for (Pattern pat : all_patterns()) {
+    for (Pattern pat : ck.patterns()) {
       const int is = pick_stride(s.w, rng), ms = pick_stride(s.w, rng);
       bvb_region_params prm;
       switch (rng.uniform(0, 5)) {
@@ -129,7 +129,7 @@ std::vector<uint8_t> floor_mask(const Image &grey, int tol, int conn) {
 void check_free(Checker &ck) {
   Rng &rng = ck.rng();
   for (Size s : check_sizes(1, 1, rng, ck.options().campaign)) {
-    for (Pattern pat : all_patterns()) {
+    for (Pattern pat : ck.patterns()) {
       const int ms = pick_stride(s.w, rng);
       auto mask = make_plane(pat, s.w, s.h, ms, rng, ck.options().frames_real);
       // Thresholded, the patterns make long runs of floor and obstacle; raw, any non-zero byte
@@ -164,8 +164,8 @@ void check_free(Checker &ck) {
 }
 
 void check(Checker &ck) {
-  if (ck.wants("region_grow")) check_grow(ck);
-  if (ck.wants("free_space")) check_free(ck);
+  check_grow(ck);
+  check_free(ck);
 }
 
 CheckCall bench_call(const std::string &kernel, int w, int h, Rng &) {

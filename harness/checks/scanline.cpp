@@ -83,7 +83,6 @@ std::vector<uint8_t> profile_bytes(Pattern p, int w, Rng &rng, const std::string
 }
 
 void check_profile(Checker &ck) {
-  if (!ck.wants("scanline_profile_u8")) return;
   Rng &rng = ck.rng();
   std::vector<Size> sizes = check_sizes(1, 1, rng, ck.options().campaign);
   // Widths 1..17 meet every phase of the 8-column loop; rows 1..3 and up to the 256 limit.
@@ -91,7 +90,7 @@ void check_profile(Checker &ck) {
   for (int rows : {128, 255, 256}) sizes.push_back({rng.uniform(1, 70), rows});
   for (Size s : sizes) {
     const int rows = std::min(s.h, BVB_SCANLINE_MAX_ROWS);
-    for (Pattern p : all_patterns()) {
+    for (Pattern p : ck.patterns()) {
       const int ss = pick_stride(s.w, rng);
       std::string name = std::to_string(s.w) + " x " + std::to_string(rows) + " rows stride " +
                          std::to_string(ss) + " " + pattern_name(p);
@@ -103,7 +102,6 @@ void check_profile(Checker &ck) {
 }
 
 void check_shift(Checker &ck) {
-  if (!ck.wants("scanline_shift_u8")) return;
   Rng &rng = ck.rng();
   struct Case {
     int w, rho;
@@ -115,7 +113,7 @@ void check_shift(Checker &ck) {
   }
   if (ck.options().campaign) cases.push_back({BVB_SCANLINE_MAX_WINDOW, 1000});
   for (const Case &k : cases) {
-    for (Pattern p : all_patterns()) {
+    for (Pattern p : ck.patterns()) {
       std::vector<uint8_t> p1 = profile_bytes(p, k.w, rng, ck.options().frames_real), p2(k.w);
       // p2: p1 moved by a known shift with a little noise, or an unrelated profile.
       const int T = k.w - k.rho, d = rng.uniform(-T, T), mode = rng.uniform(0, 3);

@@ -62,7 +62,6 @@ CheckCall yuv_call(const std::string &kernel, int w, int h, int sstride, int dst
 
 void check(Checker &ck) {
   for (const char *kernel : {"uyvy_to_grey", "uyvy_to_rgb24"}) {
-    if (!ck.wants(kernel)) continue;
     Rng &rng = ck.rng();
     const bool rgb = std::string(kernel) == "uyvy_to_rgb24";
     std::vector<Size> sizes = check_sizes(2, 1, rng, ck.options().campaign);
@@ -70,7 +69,7 @@ void check(Checker &ck) {
     for (int w = 2; w <= 10; w += 2) sizes.push_back({w, 3});
     for (Size s : sizes) {
       const int w = s.w + (s.w & 1);  // UYVY widths are even
-      for (Pattern p : all_patterns()) {
+      for (Pattern p : ck.patterns()) {
         // Any stride, odd ones included: rows of every alignment on both sides.
         const int ss = pick_stride(2 * w, rng), ds = pick_stride(rgb ? 3 * w : w, rng);
         std::string name = std::to_string(w) + "x" + std::to_string(s.h) + " strides " + std::to_string(ss) +

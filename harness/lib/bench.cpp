@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cinttypes>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <set>
@@ -318,8 +319,7 @@ std::vector<BudgetVerdict> judge_budgets(const std::vector<BenchRow> &rows,
       v.status = BudgetVerdict::Missing;
     } else {
       v.budget = it->second->cycles;
-      const double allowed = double(v.budget) * (1 + it->second->tolerance_pct / 100);
-      v.status = double(v.measured) > allowed ? BudgetVerdict::Over : BudgetVerdict::Ok;
+      v.status = v.measured > budget_allowed(*it->second) ? BudgetVerdict::Over : BudgetVerdict::Ok;
     }
     out.push_back(v);
   }
@@ -332,6 +332,31 @@ std::vector<BudgetVerdict> judge_budgets(const std::vector<BenchRow> &rows,
       out.push_back(v);
     }
   return out;
+}
+
+uint64_t budget_allowed(const Budget &b) {
+  const double excess = double(b.cycles) * b.tolerance_pct / 100;
+  // Whole cycles; the nudge absorbs the binary error of a decimal percentage (0.1 is stored as
+  // a little more or less than 0.1), far below a cycle for any legal budget.
+  return b.cycles + uint64_t(std::floor(excess + 1e-7 * (1 + excess)));
+}
+
+std::vector<std::string> unjudged_kernels(const std::vector<std::string> &asm_kernels, const std::string &glob,
+                                          const std::vector<BudgetVerdict> &verdicts) {
+  std::vector<std::string> out;
+  for (const auto &k : asm_kernels) {
+    if (!glob_match(glob, k)) continue;
+    bool judged = false;
+    for (const auto &v : verdicts) judged |= v.key.compare(0, k.size() + 5, k + "/asm/") == 0;
+    if (!judged) out.push_back(k);
+  }
+  return out;
+}
+
+double budget_slack_pct(const BudgetVerdict &v, double pct) {
+  if (v.status != BudgetVerdict::Ok || v.measured == 0) return 0;
+  const double slack = (double(v.budget) - double(v.measured)) * 100 / double(v.measured);
+  return slack > pct ? slack : 0;
 }
 
 std::vector<Size> budget_sizes(const std::vector<Budget> &budgets) {

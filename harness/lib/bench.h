@@ -72,6 +72,17 @@ struct BudgetVerdict {
 // reported (a kernel removed or renamed) and fails too.
 std::vector<BudgetVerdict> judge_budgets(const std::vector<BenchRow> &rows,
                                          const std::vector<Budget> &budgets);
+// The most cycles a budget allows: its cycles plus tolerance_pct percent of them, rounded down
+// to a whole cycle (the percentage taken as the decimal it is written as, not its binary
+// approximation: 0.1% of 1000 allows 1001).
+uint64_t budget_allowed(const Budget &b);
+// Assembly kernels of the registry under glob that no verdict names: nothing measured them, so
+// nothing judged them.
+std::vector<std::string> unjudged_kernels(const std::vector<std::string> &asm_kernels, const std::string &glob,
+                                          const std::vector<BudgetVerdict> &verdicts);
+// A passing budget more than pct percent above what was measured: slack that would let a
+// regression through. Returns the excess in percent, or 0 when within pct.
+double budget_slack_pct(const BudgetVerdict &v, double pct = 2.0);
 // The sizes the budgets name, so the gate measures exactly those.
 std::vector<Size> budget_sizes(const std::vector<Budget> &budgets);
 

@@ -4,6 +4,8 @@
 #include <cstring>
 #include <sstream>
 
+#include "patterns.h"
+
 namespace bvb {
 
 namespace {
@@ -143,10 +145,43 @@ std::string first_difference(const std::vector<uint8_t> &expected, const std::ve
   return s.str();
 }
 
-Checker::Checker(const Target &target, CheckOptions opts)
-    : target_(target), opts_(std::move(opts)), rng_(opts_.seed) {}
+std::string replay_command(const Failure &f) {
+  if (f.case_id.empty()) return "bfbench check -k " + f.kernel + " --seed " + std::to_string(f.seed);
+  return "bfbench check --seed " + std::to_string(f.seed) + " --case " + f.case_id;
+}
 
-void Checker::reseed(const std::string &family) { rng_ = Rng((uint64_t(opts_.seed) << 32) ^ fnv(family)); }
+namespace {
+// A case's stream: (seed, family, case number) through splitmix's finaliser, so neighbouring
+// cases and seeds give unrelated streams.
+Rng case_stream(uint32_t seed, const std::string &family, uint32_t n) {
+  Rng mix((uint64_t(seed) << 32 | n) ^ (uint64_t(fnv(family)) << 16));
+  return Rng(mix.next());
+}
+}  // namespace
+
+Checker::Checker(const Target &target, CheckOptions opts)
+    : target_(target), opts_(std::move(opts)), rng_(case_stream(opts_.seed, "", 0)),
+      have_frames_(frames_real_present(opts_.frames_real)) {}
+
+void Checker::reseed(const std::string &family) {
+  family_ = family;
+  case_no_ = 0;
+  rng_ = case_stream(opts_.seed, family_, case_no_);
+}
+
+const std::vector<Pattern> &Checker::patterns() {
+  static const std::vector<Pattern> without_real = [] {
+    std::vector<Pattern> p;
+    for (Pattern q : all_patterns())
+      if (q != Pattern::Real) p.push_back(q);
+    return p;
+  }();
+  if (have_frames_) return all_patterns();
+  skip_real();
+  return without_real;
+}
+
+void Checker::skip_real() { ++skipped_real_[family_]; }
 
 std::string Checker::resolve(const std::string &kernel) const {
   auto it = opts_.kernel_alias.find(kernel);
@@ -182,21 +217,84 @@ void Checker::place_randomly(CheckCall &call) {
 }
 
 void Checker::add(CheckCall call, Observer observer) {
+  // The case number counts every call the family makes, queued or not, so -k and --case leave
+  // every other case's number and stream as they are.
+  call.case_id = call.kernel + ":" + std::to_string(case_no_);
+  rng_ = case_stream(opts_.seed, family_, ++case_no_);
+  if (!wants(call.kernel)) return;
+  if (!opts_.only_case.empty() && call.case_id != opts_.only_case) return;
   call.kernel = resolve(call.kernel);
   pending_.push_back({std::move(call), std::move(observer)});
 }
 
+std::vector<const CheckCall *> Checker::pending() const {
+  std::vector<const CheckCall *> out;
+  for (const auto &p : pending_) out.push_back(&p.call);
+  return out;
+}
+
+std::vector<std::string> Checker::coverage_gaps() const {
+  std::vector<std::string> gaps;
+  std::string only_kernel;
+  if (!opts_.only_case.empty()) only_kernel = opts_.only_case.substr(0, opts_.only_case.rfind(':'));
+  for (const auto &k : target_.registry().kernels()) {
+    if (!glob_match(opts_.kernel_glob, k.name)) continue;
+    if (!only_kernel.empty() && resolve(only_kernel) != k.name) continue;
+    std::vector<std::string> impls = {"host"};
+    if (opts_.run_c || !k.has_asm) impls.push_back(impl_name(BVB_IMPL_C));
+    if (k.has_asm) impls.push_back(impl_name(BVB_IMPL_ASM));
+    auto it = tally_.find(k.name);
+    for (const auto &impl : impls)
+      if (it == tally_.end() || !it->second.count(impl) || it->second.at(impl).calls == 0)
+        gaps.push_back(k.name + " (" + impl + ")");
+  }
+  return gaps;
+}
+
+std::vector<Failure> compare_call(const CheckCall &cc, const std::string &impl, uint32_t seed,
+                                  const std::vector<std::vector<uint8_t>> &actual,
+                                  const std::vector<std::vector<uint8_t>> &expected, const HostBuffers &host,
+                                  const uint32_t *ret) {
+  std::vector<Failure> out;
+  auto fail = [&](Failure::Kind kind, std::string msg) {
+    out.push_back({cc.kernel, impl, cc.case_name, seed, kind, std::move(msg), cc.case_id});
+  };
+  if (ret && host.has_ret() && int32_t(*ret) != host.ret())
+    fail(Failure::ReturnValue, "returned " + std::to_string(int32_t(*ret)) + ", expected " + std::to_string(host.ret()));
+  for (size_t b = 0; b < cc.bufs.size() && b < actual.size(); ++b) {
+    const Buffer &buf = cc.bufs[b];
+    if (buf.role == Role::Scratch) continue;
+    // Inputs against the bytes they were generated with: a reference that wrote its input must
+    // not make the implementations that left it alone look guilty.
+    const std::vector<uint8_t> &want = buf.role == Role::In ? buf.data : expected[b];
+    std::string d = first_difference(want, actual[b], buf.view);
+    if (d.empty()) continue;
+    if (buf.role == Role::In)
+      fail(Failure::InputModified, "input buffer '" + buf.name + "' was written: " + d);
+    else
+      fail(Failure::Mismatch, "buffer '" + buf.name + "' " + d);
+  }
+  return out;
+}
+
+void Checker::record(const CheckCall &cc, const std::string &impl, const std::vector<Failure> &found) {
+  auto &t = tally_[cc.kernel][impl];
+  ++t.calls;
+  for (Failure f : found) {
+    // The report prints the kind before the message: "hang: hang: ..." says it twice.
+    const std::string prefix = std::string(failure_kind_name(f.kind)) + ": ";
+    if (f.message.compare(0, prefix.size(), prefix) == 0) f.message.erase(0, prefix.size());
+    failures_.push_back(std::move(f));
+  }
+  if (!found.empty()) ++t.failed;
+}
+
 void Checker::judge(const CheckCall &cc, uint32_t impl, const Call &call, const CallResult &r,
                     const std::vector<std::vector<uint8_t>> &expected, const HostBuffers &host) {
-  auto &t = tally_[cc.kernel][impl_name(impl)];
-  ++t.calls;
+  std::vector<Failure> found;
   auto fail = [&](Failure::Kind kind, std::string msg) {
-    // The report prints the kind before the message: "hang: hang: ..." says it twice.
-    const std::string prefix = std::string(failure_kind_name(kind)) + ": ";
-    if (msg.compare(0, prefix.size(), prefix) == 0) msg.erase(0, prefix.size());
-    failures_.push_back({cc.kernel, impl_name(impl), cc.case_name, opts_.seed, kind, msg});
+    found.push_back({cc.kernel, impl_name(impl), cc.case_name, opts_.seed, kind, std::move(msg), cc.case_id});
   };
-  const size_t before = failures_.size();
   if (!r.crash.empty()) {
     fail(Failure::Crash, describe_failure(call, r, target_.elf()));
   } else if (r.status == BVB_FAULT) {
@@ -207,24 +305,13 @@ void Checker::judge(const CheckCall &cc, uint32_t impl, const Call &call, const 
     fail(Failure::Other, describe_failure(call, r, target_.elf()));
   } else {
     if (r.abi_bad) fail(Failure::Abi, "did not preserve " + abi_names(r.abi_bad));
-    if (host.has_ret() && int32_t(r.ret) != host.ret())
-      fail(Failure::ReturnValue, "returned " + std::to_string(int32_t(r.ret)) + ", expected " +
-                                     std::to_string(host.ret()));
     for (const auto &g : r.guard_damage)
       fail(Failure::Guard, std::string("overwrite ") + (g.before ? "before" : "after") + " buffer '" +
                                call.bufs[g.buffer].name + "' at byte offset " + std::to_string(g.offset));
-    for (size_t b = 0; b < call.bufs.size(); ++b) {
-      const Buffer &buf = call.bufs[b];
-      if (buf.role == Role::Scratch) continue;
-      std::string d = first_difference(expected[b], r.data[b], buf.view);
-      if (d.empty()) continue;
-      if (buf.role == Role::In)
-        fail(Failure::InputModified, "input buffer '" + buf.name + "' was written: " + d);
-      else
-        fail(Failure::Mismatch, "buffer '" + buf.name + "' " + d);
-    }
+    for (auto &f : compare_call(cc, impl_name(impl), opts_.seed, r.data, expected, host, &r.ret))
+      found.push_back(std::move(f));
   }
-  if (failures_.size() > before) ++t.failed;
+  record(cc, impl_name(impl), found);
 }
 
 size_t Checker::flush() {
@@ -289,6 +376,8 @@ size_t Checker::flush() {
     for (const auto &b : cc.bufs) expected.push_back(b.data);
     HostBuffers hb(expected);
     if (cc.host) cc.host(hb);
+    // The host reference is judged too: it must leave its inputs as they were.
+    record(cc, "host", compare_call(cc, "host", opts_.seed, expected, expected, hb, nullptr));
     for (; s < slots.size() && slots[s].pending == p; ++s) {
       judge(cc, slots[s].impl, calls[s], results[s], expected, hb);
       if (pending_[p].observer) pending_[p].observer(slots[s].impl, results[s]);

@@ -16,6 +16,10 @@
 #include "target.h"
 
 namespace bvb {
+enum class Pattern;
+}
+
+namespace bvb {
 
 // splitmix64: small, fast, and the same sequence on every platform.
 class Rng {
@@ -65,7 +69,10 @@ class HostBuffers {
 
 struct CheckCall {
   std::string kernel;
-  std::string case_name;  // e.g. "13x5 stride 16 ramp"; with the seed, enough to replay
+  std::string case_name;  // e.g. "13x5 stride 16 ramp"
+  // "kernel:N": the N-th call its family's check queued (Checker::add sets it); with the seed,
+  // `bfbench check --seed S --case ID` replays exactly this call.
+  std::string case_id;
   std::vector<Buffer> bufs;
   std::vector<Arg> args;
   std::function<void(HostBuffers &)> host;  // runs the host C reference on the buffers
@@ -90,8 +97,11 @@ struct Failure {
   uint32_t seed = 0;
   Kind kind = Other;
   std::string message;
+  std::string case_id;  // CheckCall::case_id
 };
 const char *failure_kind_name(Failure::Kind k);
+// The command that re-runs exactly the failed call: "bfbench check --seed S --case ID".
+std::string replay_command(const Failure &f);
 
 struct CheckOptions {
   uint32_t seed = 0;
@@ -105,6 +115,9 @@ struct CheckOptions {
   // runs add_sat_u8's checks against its broken twins).
   std::map<std::string, std::string> kernel_alias;
   std::string frames_real; // ../shared/frames-real, for crops of real frames
+  // Only the call with this CheckCall::case_id ("kernel:N") is queued; every other call is still
+  // generated (its family's draws are the same), just not run.
+  std::string only_case;
 };
 
 class Checker {
@@ -116,11 +129,25 @@ class Checker {
   const CheckOptions &options() const { return opts_; }
   const Target &target() const { return target_; }
   uint32_t seed() const { return opts_.seed; }
+  // The current case's random stream. Each call a family queues draws from a stream of its own,
+  // derived from (seed, family, case number): add() starts the next case's stream. A family
+  // generates every case of every kernel whatever -k says; add() filters. So a case's inputs do
+  // not depend on -k, --case or the other cases.
   Rng &rng() { return rng_; }
-  void reseed(const std::string &family);  // each family's inputs depend only on seed and name
+  void reseed(const std::string &family);  // starts the family: case 0's stream
 
   // Is this kernel selected by -k and present in the firmware?
   bool wants(const std::string &kernel) const;
+
+  // Real frames (opts.frames_real) for the cases that crop them. Without them such cases are
+  // not generated: patterns() leaves Pattern::Real out and skipped_real() names the families
+  // that skipped cases, for a visible message; BVB_REQUIRE_FRAMES=1 makes bfbench check an
+  // error instead. Never a substitute under the real case's name.
+  bool have_frames() const { return have_frames_; }
+  const std::vector<Pattern> &patterns();
+  // Call where a real-frame case is left out for want of the frames (patterns() calls it).
+  void skip_real();
+  const std::map<std::string, size_t> &skipped_real() const { return skipped_real_; }
 
   // Places the call's buffers as firmware would: in L1 (data bank A, B, the scratchpad) while
   // there is room, the rest in SDRAM; which bank is tried first, and whether a call stays all
@@ -131,6 +158,12 @@ class Checker {
   void add(CheckCall call, Observer observer = {});
   // Runs everything queued; records failures. Returns the number of new failures.
   size_t flush();
+  // The calls queued and not yet run (for tests of what a family generates).
+  std::vector<const CheckCall *> pending() const;
+  // Kernels selected by -k (and, with only_case, that case's kernel) without a judged call for
+  // each implementation: the host reference, the C on the Blackfin (unless run_c is off for an
+  // assembly kernel), the assembly. "kernel (impl)" each; empty when every one was judged.
+  std::vector<std::string> coverage_gaps() const;
 
   const std::vector<Failure> &failures() const { return failures_; }
   // Per kernel and implementation: calls checked and calls that failed.
@@ -141,10 +174,15 @@ class Checker {
   std::string resolve(const std::string &kernel) const;
   void judge(const CheckCall &cc, uint32_t impl, const Call &call, const CallResult &r,
              const std::vector<std::vector<uint8_t>> &expected, const HostBuffers &host);
+  void record(const CheckCall &cc, const std::string &impl, const std::vector<Failure> &found);
 
   const Target &target_;
   CheckOptions opts_;
   Rng rng_;
+  std::string family_;
+  uint32_t case_no_ = 0;
+  bool have_frames_ = false;
+  std::map<std::string, size_t> skipped_real_;
   struct Pending {
     CheckCall call;
     Observer observer;
@@ -153,6 +191,18 @@ class Checker {
   std::vector<Failure> failures_;
   std::map<std::string, std::map<std::string, Tally>> tally_;
 };
+
+// The comparisons behind a call's verdict, without the simulator: the implementation's buffers
+// after the call against what they must hold. An input must still hold its original bytes
+// (call.bufs[i].data, as generated: not the host reference's copy, which a faulty reference may
+// have written); outputs and in/out buffers must equal the host reference's (expected); the
+// return value must be the host's when it set one. For the host reference itself, pass its
+// buffers as `actual` and `expected` both: only its inputs are then judged. Failures carry the
+// call's kernel, case and id, impl and seed.
+std::vector<Failure> compare_call(const CheckCall &call, const std::string &impl, uint32_t seed,
+                                  const std::vector<std::vector<uint8_t>> &actual,
+                                  const std::vector<std::vector<uint8_t>> &expected, const HostBuffers &host,
+                                  const uint32_t *ret);
 
 // The byte that output buffers start as: a kernel that skips a pixel leaves it showing.
 inline uint8_t poison_byte(size_t i) { return uint8_t(0xC3 + i * 0x29); }

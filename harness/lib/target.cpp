@@ -239,6 +239,8 @@ uint32_t Target::arena_bytes(uint32_t place) const {
                                    {"_l1b_arena_start", "_l1b_arena_end"},
                                    {"_scratch_arena_start", "_scratch_arena_end"}};
   if (place >= BVB_PLACE_WINDOW) return BVB_WINDOW_MAX;
+  auto it = arena_override_.find(place);
+  if (it != arena_override_.end()) return it->second;
   uint32_t lo = 0, hi = 0;
   if (!symbol_value(image_.elf, names[place][0], &lo) || !symbol_value(image_.elf, names[place][1], &hi))
     throw sim::SetupError(image_.elf + ": no arena symbols (not a bfbench firmware image?)");

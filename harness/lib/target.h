@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -102,6 +103,9 @@ class Target {
   const std::string &simulator() const { return simulator_; }
   // Bytes the firmware has for buffers placed in `place` (from the image's linker symbols).
   uint32_t arena_bytes(uint32_t place) const;
+  // Arena sizes given instead of read from the image: for generating calls without a firmware
+  // (tests of what the checks generate, in host-only builds).
+  void set_arena_bytes(uint32_t place, uint32_t bytes) { arena_override_[place] = bytes; }
   uint32_t null_call_cycles() const { return null_call_cycles_; }
   // The simulator's timing model: "bf537" (modelled BF537 cycles: stalls, L1 banks, SDRAM,
   // caches) or "none" (the simulator's own counts: one per instruction, fixed extras).
@@ -123,6 +127,7 @@ class Target {
   std::string timing_;
   bool isolated_ = false;
   mutable uint32_t null_call_cycles_ = 0;
+  std::map<uint32_t, uint32_t> arena_override_;
 };
 
 // One simulator process serving a sequence of calls of one shape (BVB_SERVE in the window): a

@@ -131,7 +131,6 @@ BVB_PIPELINE(kFlowAvoid);
 // ---- the kernel family: the pipeline entry as one kernel ----
 
 void check(Checker &ck) {
-  if (!ck.wants("pipe_flow_avoid")) return;
   // Each frame starts from the host build's state after the previous one. boxes_approach ends
   // blocked (flow frames, then a committed turn); boxes_turn turns in place (probes only).
   struct Stretch {

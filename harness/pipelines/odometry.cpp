@@ -305,7 +305,6 @@ void check_sequence(Checker &ck, const Sequence &q) {
 }
 
 void check(Checker &ck) {
-  if (!ck.wants("pipe_odometry")) return;
   Rng &rng = ck.rng();
   const std::string seed = std::to_string(rng.uniform(1, 1000));
   std::vector<Sequence> seqs = {

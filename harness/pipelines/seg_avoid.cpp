@@ -103,7 +103,6 @@ BVB_PIPELINE(kSegAvoid);
 // ---- the kernel family: the pipeline entry as one kernel ----
 
 void check(Checker &ck) {
-  if (!ck.wants("pipe_seg_avoid")) return;
   // Short stretches of every bundled scene, each frame starting from the host build's state
   // after the previous one: the approach to the box (blocked at the end), the turn, the mover
   // with the lighting step at frame 16.

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "io.h"
+#include "tempdir.h"
 
 namespace bvb {
 namespace {
@@ -26,7 +27,8 @@ struct CliRun {
   std::string out, err;
 };
 
-std::string dir() { return testing::TempDir(); }
+// Each test its own directory (tempdir.h): the files below have fixed names.
+std::string dir() { return test_dir(); }
 
 std::string slurp(const std::string &p) {
   std::ifstream f(p, std::ios::binary);

@@ -17,6 +17,7 @@
 
 #include "bvb/add_sat.h"
 #include "io.h"
+#include "tempdir.h"
 
 namespace bvb {
 namespace {
@@ -26,7 +27,8 @@ struct CliRun {
   std::string out, err;
 };
 
-std::string dir() { return testing::TempDir(); }
+// Each test its own directory (tempdir.h): the files below have fixed names.
+std::string dir() { return test_dir(); }
 
 CliRun bfbench(const std::string &args, const std::string &env = "") {
   // Per process: ctest runs this file's tests in parallel.
@@ -146,6 +148,32 @@ TEST(Cli, BudgetsFailWhenOverOrMissing) {
   EXPECT_EQ(upd.status, 0) << upd.err;
   EXPECT_NE(upd.out.find("add_sat_u8/asm/160x120                   new -> "), std::string::npos) << upd.out;
   EXPECT_EQ(bfbench("budgets -k add_sat_u8 --file " + empty).status, 0);
+}
+
+// A budget far above what the kernel takes passes but is reported as loose.
+TEST(Cli, LooseBudgetsAreReported) {
+  const std::string loose = dir() + "loose.json";
+  write(loose, "{\"timing\": \"bf537\", \"budgets\": {\"add_sat_u8/asm/160x120\": {\"cycles\": 900000000}}}");
+  CliRun r = bfbench("budgets -k add_sat_u8 -j 2 --file " + loose);
+  EXPECT_EQ(r.status, 1) << r.out << r.err;  // 320x240 and 640x480 have none
+  EXPECT_NE(r.out.find("add_sat_u8/asm/160x120"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("(loose: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("1 loose by more than 2%"), std::string::npos) << r.out;
+}
+
+// --case re-runs one call; a case that names no call is no pass; the id must be KERNEL:N.
+TEST(Cli, CheckCaseRunsExactlyOneCall) {
+  CliRun one = bfbench("check --seed 3 --case add_sat_u8:5 -j 1");
+  EXPECT_EQ(one.status, 0) << one.out << one.err;
+  EXPECT_NE(one.out.find("asm: 1/1 ok   c: 1/1 ok   host: 1/1 ok"), std::string::npos) << one.out;
+  EXPECT_NE(one.out.find("all 2 calls bit-exact"), std::string::npos) << one.out;
+  CliRun none = bfbench("check --seed 3 --case add_sat_u8:999999 -j 1");
+  EXPECT_EQ(none.status, 1) << none.out << none.err;
+  EXPECT_NE(none.out.find("NOT CHECKED add_sat_u8 (asm): no call judged"), std::string::npos) << none.out;
+  expect_bad_input("check --seed 3 --case add_sat_u8", "--case wants KERNEL:N");
+  expect_bad_input("check --case add_sat_u8:1", "--case needs the --seed");
+  expect_bad_input("check --seed 1 --case nosuchkernel:1", "nosuchkernel");
+  expect_bad_input("check -k 'sobel*' --seed 1 --case add_sat_u8:1", "not of a kernel");
 }
 
 }  // namespace

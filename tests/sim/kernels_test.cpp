@@ -3,6 +3,8 @@
 // each is its own process, and GoogleTest's sharding variables split them across machines.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "check.h"
 #include "family.h"
 #include "patterns.h"
@@ -41,9 +43,18 @@ TEST_P(Kernels, BitExactAgainstReference) {
   for (const auto &kv : ck.tally())
     for (const auto &it : kv.second) calls += it.second.calls;
   EXPECT_GT(calls, 0u) << "family " << p.family->name << " checked nothing";
+  // Each of the family's kernels judged on every implementation (host, C, assembly).
+  for (const auto &gap : ck.coverage_gaps())
+    for (const auto &k : p.family->kernels)
+      if (gap.compare(0, k.size() + 2, k + " (") == 0) ADD_FAILURE() << gap << ": no call judged";
+  // Real-frame cases left out for want of the frames: said, and an error where they are required.
+  if (!ck.skipped_real().empty()) {
+    if (frames_required()) ADD_FAILURE() << frames_missing_message(o.frames_real);
+    else std::printf("[ NOTE     ] %s: %s\n", p.family->name.c_str(), frames_missing_message(o.frames_real).c_str());
+  }
   for (const auto &f : ck.failures())
     ADD_FAILURE() << f.kernel << " (" << f.impl << ") " << f.case_name << ", seed " << f.seed << ": "
-                  << failure_kind_name(f.kind) << ": " << f.message;
+                  << failure_kind_name(f.kind) << ": " << f.message << "\n  replay: " << replay_command(f);
 }
 
 INSTANTIATE_TEST_SUITE_P(Check, Kernels, testing::ValuesIn(params()),
