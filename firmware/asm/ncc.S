@@ -111,7 +111,8 @@
 #define CTX_PRE 260   /* 1 when the spare holds the next point's search area */
 #define CTX_RECIP 264 /* ceil(2^16 / (2s+1)) */
 #define CTX_NCH 268   /* chunks of the copy program that are real */
-#define CTX_DUMMY 272 /* 36 bytes: where the program's idle chunks write */
+#define CTX_DUMMY 272 /* 36 bytes: where the program's idle chunks write (unbanked layout) */
+#define CTX_DUMMYP 312 /* the dummy area's address */
 #define CTX_SEGB 320  /* the selection sweep's pairs before the seed's column pair */
 #define CTX_SIZE 336
 #define CHUNK 18      /* pixels per chunk of the copy program */
@@ -392,6 +393,10 @@ _ncc_layout:
 	[p5 + CTX_RECIP] = r0;
 	r7 = [p5 + CTX_T0];
 	/* the copy program (r = 5, 5 <= s <= 10): a spare He, Ho and the program itself */
+	r0 = p5;
+	r1 = CTX_DUMMY;
+	r0 = r0 + r1;
+	[p5 + CTX_DUMMYP] = r0;
 	r0 = 0;
 	[p5 + CTX_PIPE] = r0;
 	[p5 + CTX_PRE] = r0;
@@ -407,16 +412,73 @@ _ncc_layout:
 	if cc jump .Ll_out;
 	r0 = 1;
 	[p5 + CTX_PIPE] = r0;
-	[p5 + CTX_HE2] = r7;
 	r2 = [p5 + CTX_L];
 	r5 = [p5 + CTX_HEROW];
 	r6 = r2;
 	r6 *= r5;            /* L * HEROW */
+	r0 = 8;
+	cc = r0 < r4;
+	if cc jump .Ll_flat;
+	/* s <= 8: the banked layout (bvb/ncc.h). Each 4 KB sub-bank of the scratch holds what is
+	 * never accessed in one cycle with the others': 0 the context, He, Ho; 1 the spare He, Ho;
+	 * 2 T' (TF, TP), the numerators, the copy program, CS2, the idle chunks' dummy area;
+	 * 3 NQ2. The MAC pass loads He or Ho with T' (or stores numerators, loads the program,
+	 * stores into the other pair), pass 1 loads He with CS2 or NQ2 stores, pass 2 loads CS2
+	 * with NQ2: never two in one sub-bank. */
+	r1 = p5;
+	r0 = 4096 (x);
+	r0 = r0 + r1;
+	[p5 + CTX_HE2] = r0;
+	r0 = r0 + r6;
+	r0 += 4;
+	[p5 + CTX_HO2] = r0;
+	r0 = 12288 (x);
+	r0 = r0 + r1;
+	[p5 + CTX_NQ2] = r0;
+	r7 = 8192 (x);
+	r7 = r7 + r1;
+	[p5 + CTX_TF] = r7;
+	r0 = 4 * 61;         /* (N + 1) / 2 words, r = 5 */
+	r7 = r7 + r0;
+	[p5 + CTX_TP] = r7;
+	r0 = 4 * 66 + 8;     /* w (r + 1) words, then the two words of the first (empty) stores */
+	r7 = r7 + r0;
+	[p5 + CTX_NP] = r7;
+	r0 = r4 << 1;
+	r0 += 1;
+	r0 *= r4;
+	r0 = r0 << 3;
+	r7 = r7 + r0;
+	r7 += 4;
+	[p5 + CTX_NS] = r7;
+	r0 = r4 << 1;
+	r0 += 2;
+	r0 = r0 << 2;
+	r7 = r7 + r0;
+	[p5 + CTX_TAB] = r7;
+	r0 = r2 << 2;
+	r1 = r4 << 1;
+	r0 = r0 + r1;
+	r0 += 1;
+	r1 = 12;
+	r0 *= r1;            /* 4L + 2s + 1 chunks */
+	r7 = r7 + r0;
+	[p5 + CTX_CS2] = r7;
+	r0 = r2;
+	r0 += 1;
+	r1 = [p5 + CTX_KSB];
+	r0 *= r1;
+	r7 = r7 + r0;
+	[p5 + CTX_DUMMYP] = r7;
+	jump .Ll_tab;
+.Ll_flat:
+	[p5 + CTX_HE2] = r7;
 	r7 = r7 + r6;
 	r7 += 4;
 	[p5 + CTX_HO2] = r7;
 	r7 = r7 + r6;
 	[p5 + CTX_TAB] = r7;
+.Ll_tab:
 	r0 = r2 << 1;        /* 2L chunks: [0, 18) and [L-18, L) of each row */
 	[p5 + CTX_NCH] = r0;
 	r1 = r4 << 1;
@@ -435,9 +497,7 @@ _ncc_layout:
 	p0 = r0;
 	p1 = [p5 + CTX_TAB];
 	r0 = [p5 + CTX_FRAME2];
-	r1 = p5;
-	r2 = CTX_DUMMY;
-	r1 = r1 + r2;
+	r1 = [p5 + CTX_DUMMYP];
 	lsetup (.Ll_d0, .Ll_d1) lc0 = p0;
 .Ll_d0:
 	[p1++] = r0;
