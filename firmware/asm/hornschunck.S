@@ -447,6 +447,12 @@ _bvb_hs_iterate_asm:
 	r1 = ashift r1 by r5.l (v) || r3.h = w[p1];     /* G(B(j-1)) <<= k; S */
 	r1.h = r1.h * r3.h, r1.l = r1.l * r3.h (s2rnd) || r5 = w[p2 + 2] (x);
 	r2.h = ashift r2.h by r5.l || [i2++] = r1;
+.else
+	/* the first pair of a row: the modifiers, in the cycles P0 needs */
+	r1 = 8;
+	m0 = r1;
+	r1 = 2;
+	m1 = r1;
 .endif
 	p0 = p4 + (p0 << 2);
 .if \bp
@@ -536,10 +542,6 @@ _bvb_hs_iterate_asm:
 	r0 = r0 + r1;
 	i1 = r0;                        /* q loads */
 	i3 = r0;                        /* gt' stores */
-	r0 = 8;
-	m0 = r0;
-	r0 = 2;
-	m1 = r0;
 	r7 = 0;
 	p3 = [fp + HS_NMID];
 	r0 = [i0++];
