@@ -3,12 +3,26 @@
  * reference, which is written one Blackfin operation per helper so that these instruction
  * sequences reproduce it.
  *
- * CYCLES (bfbench bench, simulator cycles per call, empty-call overhead subtracted; c/px per frame
- * pixel; C = the reference built with bfin-elf-gcc -O2):
+ * CYCLES (bfbench bench, per call, empty-call overhead subtracted; c/px per frame pixel; C = the
+ *   reference built with bfin-elf-gcc -O2). Modelled BF537 cycles (--timing bf537), frames,
+ *   coefficients and flow in SDRAM through the data cache, as the bench places them:
+ *                    160x120               320x240
+ *   hs_iterate     1,219,619  (63.52)    4,758,842  (61.96)    bound 10
+ *   hs_prepare     1,169,693  (60.92)    4,635,194  (60.35)    bound 17
+ *   hornschunck   13,482,647 (702.2)    54,176,473 (705.4)     bound 118, N = 10
+ *   Where the modelled cycles go (the same calls with one charge of the model turned off):
+ *   hs_prepare at 160x120: 343,133 issued (the simulator's own count), 607 address-register
+ *   stalls (the first pair and the tail of each row), 1,795 sub-bank collisions (two cached
+ *   rows loaded in one issue), 824,158 SDRAM line fills and write-backs through the cache;
+ *   hs_iterate: 195,564 issued, no stalls, 19,816 collisions (rows y-1 and y+1 of the flow, and
+ *   the coefficient and gt' rows, in one cache sub-bank), 1,004,239 SDRAM; hornschunck: 2,318,656
+ *   issued, 607 stalls, 211,755 collisions, 10.95M SDRAM. So the model's cost is the memory:
+ *   streaming row bands into L1 by DMA (MEMORY below) removes it and, with the rows placed in
+ *   different sub-banks, the collisions. The simulator's own counts (data as if in L1):
  *                    160x120               320x240               640x480
  *   hs_iterate       195,564  (10.19)      775,045  (10.09)      3,086,004  (10.05)   C ~304 c/px
- *   hs_prepare       343,014  (17.87)    1,338,774  (17.43)      5,288,694  (17.22)   C ~345 c/px
- *   hornschunck    2,318,654 (120.76)    9,167,184 (119.36)     36,457,814 (118.68)   N = 10,
+ *   hs_prepare       343,133  (17.87)    1,339,013  (17.44)      5,289,173  (17.22)   C ~345 c/px
+ *   hornschunck    2,318,656 (120.76)    9,167,186 (119.36)     36,457,814 (118.68)   N = 10,
  *                                                                          C ~3380 c/px
  * LOWER BOUNDS. One issue per cycle: one 32-bit ALU/MAC instruction with up to two loads, or one
  *   load and one store; 16-bit instructions (pointer moves, lone loads/stores) issue alone.
@@ -31,7 +45,10 @@
  *        of the one of (gt1:gt0)) + 4 pointer instructions that cannot issue in parallel:
  *        P0 = SIGNBITS, P0 = counts + 4 P0 (a 12-entry table gives k, k - 5 and 2k - 20 for
  *        three loads riding along, cheaper than computing them), P1 = index,
- *        P1 = rsqrt table + 2 P1.
+ *        P1 = rsqrt table + 2 P1. Each pointer is used in the address stage four cycles after
+ *        its move from a data register (GCC's bfin_adjust_cost, the model: 4 cycles), taken by
+ *        the other pixel's work (the phase-2 pipeline below); back to back, the two moves per
+ *        pixel would stall 8 cycles a pixel.
  *     Measured 17.22-17.87: ~138 cycles per row of set-up, branches and the border pixels.
  *   Full kernel: 1 (zeroing the start flow, a store per pixel) + 17 + 10 N: 118 at N = 10;
  *     measured 118.68-120.76.
@@ -40,10 +57,10 @@
  *
  * MEMORY. The kernels work wherever the caller puts the buffers. At the robot's sizes frames,
  *   coefficients and flow live in SDRAM (working set 14 bytes per pixel: 263 KB at 160x120, past
- *   the 64 KB of L1 data); the bench places them there. The simulator charges no SDRAM latency,
- *   so these counts are those of data in L1; on the chip the row-band DMA scheme of the header
- *   (22 bytes x width per iteration band in L1) would be needed to approach them. The count table
- *   is in L1 data bank A; the rsqrt table is the C reference's (.rodata).
+ *   the 64 KB of L1 data); the bench places them there. The simulator's own counts are those of
+ *   data in L1; the modelled ones pay SDRAM through the cache, which the row-band DMA scheme of
+ *   the header (22 bytes x width per iteration band in L1) would hide. The count table is in L1
+ *   data bank A; the rsqrt table is the C reference's (.rodata).
  *
  * READS stay inside the buffers: frame rows are read as aligned words only up to the word that
  *   holds the row's last pixel; the flow and coefficient rows only inside their width.
