@@ -1,8 +1,22 @@
 /* NCC matching (bvb/ncc.h) for the BF537.
  *
  * Cycles (bfbench bench: 32 points on a grid, r = 5 (11x11), s = 8 (289 candidates each), frame 2
- * = frame 1 (uniform noise) moved by (3, -2) plus noise; simulator cycles per call):
- *   160x120: 725,290 = 78.4 per candidate (C at -O2: 14,228,829 = 1538.6, 19.6x);
+ * = frame 1 (uniform noise) moved by (3, -2) plus noise; frames in SDRAM, scratch in L1 bank A).
+ * Modelled BF537 cycles (--timing bf537) per call:
+ *   160x120: 789,663 = 85.4 per candidate; 320x240: 837,217 = 90.5 (bound 60.5).
+ *   Where they go at 160x120 (the same call with one charge of the model turned off): 725,345
+ *   issued (the simulator's own count, 78.4 per candidate, below), ~56,000 SDRAM line fills of
+ *   the frames (the template and the search area of each point, through the data cache; 320x240
+ *   pays more of them), 6,678 sub-bank collisions (most of them the selection sweep, 145 a
+ *   point: it loads both numerators of a pair, one 8-byte record, in one issue), 1,546
+ *   address-register stalls (per point set-up). With the banked scratch layout (bvb/ncc.h) the
+ *   MAC pass, passes 1 and 2 and the copy program make no same-sub-bank dual access (in one
+ *   sub-bank, T' against the search area's copies costs a cycle every other MAC). Bringing each
+ *   point's search area into L1 by DMA during the previous point, instead of the copy program's
+ *   byte loads through the cache, would take off the line fills: ~79 per candidate (an
+ *   estimate, 85.4 less the fills' 6.1, if the DMA cost the core nothing).
+ * Simulator cycles per call (--timing none, data as if in L1):
+ *   160x120: 725,345 = 78.4 per candidate (C at -O2: 14,228,829 = 1538.6, 19.6x);
  *   320x240 and 640x480: 78.5 per candidate (the work does not depend on the frame size).
  * Lower bound: a candidate is 121 multiply-accumulates and the two MAC units do two a cycle, so
  * 60.5 cycles per candidate (its loads, 121 data words and 61 template words per pair of
@@ -16,11 +30,12 @@
  * template at many offsets, and each of those costs an exact comparison (~200 cycles): on the
  * Middlebury pairs (RubberWhale, Grove2, Urban2, Dimetrodon, Hydrangea; 48 points, r = 5, s = 8)
  * 256 to 391 cycles per candidate, 4 to 6 times faster than the C reference there.
- * Working set: the scratch buffer, 11.1 KB for r = 5, s = 8 (L1 data bank A in the bench, frames
+ * ncc_scoremap (one point, every candidate scored exactly): 168,777 modelled cycles at 160x120
+ * (584 per score), 181,652 at 320x240; 164,439 issued, 2,348 address-register stalls (a pointer
+ * moved and used at once per candidate in _ncc_num and _ncc_exactv), no collisions, the rest SDRAM.
+ * Working set: the scratch buffer, 13.1 KB for r = 5, s = 8 (L1 data bank A in the bench, frames
  * in SDRAM, read once per point: a byte per pixel of the search area and of the template). The
- * simulator models no stalls: on hardware the P-register loads of the copy program used as
- * addresses 2 to 6 cycles later, and L1 sub-bank conflicts between the template and the pixel
- * copies, add cycles.
+ * copy program's P-register loads are used as addresses 6 cycles later (no stall).
  *
  * Per point the work is split into passes over the scratch buffer:
  *   template   T' = N*T - ST (16-bit), flat and with padded rows; vt = N*STT - ST^2
