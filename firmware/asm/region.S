@@ -9,6 +9,13 @@
  *   160x120        2,277,208      579,018      3.9x         200.3 / 50.9            30.2
  *   320x240        8,951,463    2,440,578      3.7x         200.4 / 54.6            31.8
  *   640x480       35,162,669    9,439,278      3.7x         200.1 / 53.7            30.7
+ *   Modelled BF537 cycles (--timing bf537; image, mask and queue in SDRAM as the bench places
+ *   them): 1,126,115 at 160x120 (58.7 per frame pixel, 99.0 per grown pixel), 10,973,997 at
+ *   320x240 (142.9, 245.7). At 160x120: 579,016 issued (the simulator's count above), 28
+ *   address-register stalls, no sub-bank collisions, 547,071 SDRAM line fills and write-backs of
+ *   the image, mask and queue through the 16 KB data cache (more of them per pixel at 320x240,
+ *   77 KB of image and of mask). Each pixel's pointers are moved into P0/P1 once, five
+ *   cycles before their first use; the constant 1 read beside a stack local lives in bank A.
  *   Lower bound: 20 cycles per grown pixel (four neighbour byte tests, compare + branch each;
  *   the tolerance test, multiply / subtract / abs / compare / branch; the count, sum,
  *   tol * count, bounding-box and sum_x/sum_y updates; queue bookkeeping and the loop branch;
