@@ -3,12 +3,12 @@
  * Cycles (bfbench bench: 32 points on a grid, r = 5 (11x11), s = 8 (289 candidates each), frame 2
  * = frame 1 (uniform noise) moved by (3, -2) plus noise; frames in SDRAM, scratch in L1 bank A).
  * Modelled BF537 cycles (--timing bf537) per call:
- *   160x120: 789,663 = 85.4 per candidate; 320x240: 837,217 = 90.5 (bound 60.5).
+ *   160x120: 789,535 = 85.4 per candidate; 320x240: 837,089 = 90.5 (bound 60.5).
  *   Where they go at 160x120 (the same call with one charge of the model turned off): 725,345
  *   issued (the simulator's own count, 78.4 per candidate, below), ~56,000 SDRAM line fills of
  *   the frames (the template and the search area of each point, through the data cache; 320x240
  *   pays more of them), 6,678 sub-bank collisions (most of them the selection sweep, 145 a
- *   point: it loads both numerators of a pair, one 8-byte record, in one issue), 1,546
+ *   point: it loads both numerators of a pair, one 8-byte record, in one issue), ~1,400
  *   address-register stalls (per point set-up). With the banked scratch layout (bvb/ncc.h) the
  *   MAC pass, passes 1 and 2 and the copy program make no same-sub-bank dual access (in one
  *   sub-bank, T' against the search area's copies costs a cycle every other MAC). Bringing each
@@ -30,9 +30,9 @@
  * template at many offsets, and each of those costs an exact comparison (~200 cycles): on the
  * Middlebury pairs (RubberWhale, Grove2, Urban2, Dimetrodon, Hydrangea; 48 points, r = 5, s = 8)
  * 256 to 391 cycles per candidate, 4 to 6 times faster than the C reference there.
- * ncc_scoremap (one point, every candidate scored exactly): 168,777 modelled cycles at 160x120
- * (584 per score), 181,652 at 320x240; 164,439 issued, 2,348 address-register stalls (a pointer
- * moved and used at once per candidate in _ncc_num and _ncc_exactv), no collisions, the rest SDRAM.
+ * ncc_scoremap (one point, every candidate scored exactly): 166,822 modelled cycles at 160x120
+ * (577 per score), 179,697 at 320x240; 164,439 issued, ~400 address-register stalls (one a
+ * candidate in _ncc_exactv), no collisions, the rest SDRAM.
  * Working set: the scratch buffer, 13.1 KB for r = 5, s = 8 (L1 data bank A in the bench, frames
  * in SDRAM, read once per point: a byte per pixel of the search area and of the template). The
  * copy program's P-register loads are used as addresses 6 cycles later (no stall).
@@ -1566,13 +1566,15 @@ _ncc_num:
 	r4 = r4 >> 29;       /* (e & 1) * 4 */
 	r3 = r3 + r4;
 	r4 = [p5 + CTX_NP];
-	jump .Ln_load;
+	r3 = r3 + r4;
+	p0 = r3;
+	jump .Ln_load;       /* (its cycles cover P0's move) */
 .Ln_single:
 	r3 = r1 << 2;
 	r4 = [p5 + CTX_NS];
-.Ln_load:
 	r3 = r3 + r4;
 	p0 = r3;
+.Ln_load:
 	r2 = [p0];
 	rts;
 
@@ -1949,8 +1951,8 @@ _bvb_ncc_scoremap_asm:
 	r2 = r0;
 	r0 = [p5 + CTX_T17];
 	r1 = [p5 + CTX_VT];
+	p3 = [p5 + CTX_RES];  /* (_ncc_score keeps P3) */
 	call _ncc_score;
-	p3 = [p5 + CTX_RES];
 	w[p3++] = r0;
 	[p5 + CTX_RES] = p3;
 	r1 = [p5 + CTX_S];
