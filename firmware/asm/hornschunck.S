@@ -7,18 +7,17 @@
  *   reference built with bfin-elf-gcc -O2). Modelled BF537 cycles (--timing bf537), frames,
  *   coefficients and flow in SDRAM through the data cache, as the bench places them:
  *                    160x120               320x240
- *   hs_iterate     1,219,619  (63.52)    4,758,842  (61.96)    bound 10
+ *   hs_iterate     1,192,945  (62.13)    4,667,111  (60.77)    bound 10
  *   hs_prepare     1,169,693  (60.92)    4,635,194  (60.35)    bound 17
- *   hornschunck   13,482,647 (702.2)    54,176,473 (705.4)     bound 118, N = 10
+ *   hornschunck   13,199,603 (687.5)    52,961,454 (689.6)     bound 118, N = 10
  *   Where the modelled cycles go (the same calls with one charge of the model turned off):
  *   hs_prepare at 160x120: 343,133 issued (the simulator's own count), 607 address-register
  *   stalls (the first pair and the tail of each row), 1,795 sub-bank collisions (two cached
- *   rows loaded in one issue), 824,158 SDRAM line fills and write-backs through the cache;
- *   hs_iterate: 195,564 issued, no stalls, 19,816 collisions (rows y-1 and y+1 of the flow, and
- *   the coefficient and gt' rows, in one cache sub-bank), 1,004,239 SDRAM; hornschunck: 2,318,656
- *   issued, 607 stalls, 211,755 collisions, 10.95M SDRAM. So the model's cost is the memory:
- *   streaming row bands into L1 by DMA (MEMORY below) removes it and, with the rows placed in
- *   different sub-banks, the collisions. The simulator's own counts (data as if in L1):
+ *   rows loaded in one issue in passes A and B), 824,158 SDRAM line fills and write-backs
+ *   through the cache; hs_iterate: 195,564 issued, no stalls, 107 collisions (first and last
+ *   pixels), 997,274 SDRAM; hornschunck: 2,318,656 issued, 607 stalls, 2,912 collisions, 10.88M
+ *   SDRAM. So the model's cost is the memory, which streaming row bands into L1 by DMA (MEMORY
+ *   below) would hide. The simulator's own counts (data as if in L1):
  *                    160x120               320x240               640x480
  *   hs_iterate       195,564  (10.19)      775,045  (10.09)      3,086,004  (10.05)   C ~304 c/px
  *   hs_prepare       343,133  (17.87)    1,339,013  (17.44)      5,289,173  (17.22)   C ~345 c/px
@@ -71,15 +70,19 @@
  * --------------------------------------------------------------------------------------------- */
 
 /* One interior pixel. Column sums cl = ra, c0 = rb (carried), cr = rc (computed here); on entry
- * R0 = G and R3.L = e of the previous pixel, A1:A0 its exact sums, I2 at M(x-1). */
+ * R0 = G and R3.L = e of the previous pixel, A1:A0 its exact sums, R2 = T(x+1), I2 at M(x-1).
+ * One memory access an issue (T(x+2) loaded a pixel ahead, the output stored in the sixth):
+ * two in one issue cost a cycle whenever they meet in one L1 or data-cache sub-bank, as the
+ * rows of one flow buffer do. The last pixel's T(x+2) is one word past the row (row y-1, or
+ * row 0 for y = 0): inside uv_in, row y follows; it is not used. */
 .macro HS_PIX ra, rb, rc
-	R3.H = (A1 -= R3.L * R0.H), R3.L = (A0 -= R3.L * R0.L) (IH) || R0 = [I0++] || R1 = [I1++];
-	\rc = R0 +|+ R1 (S) || [P1++] = R3 || R0 = [I2 ++ M0];
+	R3.H = (A1 -= R3.L * R0.H), R3.L = (A0 -= R3.L * R0.L) (IH) || R1 = [I1++];
+	\rc = R2 +|+ R1 (S) || R0 = [I2 ++ M0];
 	A1 = \ra\().H * R7.L, A0 = \ra\().L * R7.L || R1 = [I2 ++ M1];
-	R2 = R0 +|+ R1 (S) || R1 = W[P0++] (X) || R0 = [I3++];
-	A1 += \rc\().H * R7.L, A0 += \rc\().L * R7.L;
-	A1 += R2.H * R7.H, A0 += R2.L * R7.H;
-	R3.H = (A1 += \rb\().H * R7.H), R3.L = (A0 += \rb\().L * R7.H);
+	R2 = R0 +|+ R1 (S) || R1 = W[P0++] (X);
+	A1 += \rc\().H * R7.L, A0 += \rc\().L * R7.L || R0 = [I3++];
+	A1 += R2.H * R7.H, A0 += R2.L * R7.H || [P1++] = R3;
+	R3.H = (A1 += \rb\().H * R7.H), R3.L = (A0 += \rb\().L * R7.H) || R2 = [I0++];
 	R3.H = R3.H * R0.H, R3.L = R3.L * R0.L (S2RND);
 	R3.L = R3.L + R3.H (S);
 .endm
@@ -111,7 +114,7 @@
 	r3.h = (a1 += \x0\().h * r7.h), r3.l = (a0 += \x0\().l * r7.h);
 	r3.h = r3.h * r0.h, r3.l = r3.l * r0.l (s2rnd);
 	r3.l = r3.l + r3.h (s);
-	r3.l = r3.l + r1.l (s);
+	r3.l = r3.l + r1.l (s) || r2 = [i0++];           /* T(2), for pixel 1 */
 .if \m == 1
 	HS_PIX r6, r4, r5
 	r3.l = r3.l + r1.l (s);
