@@ -62,7 +62,9 @@
  *   data bank A; the rsqrt table is the C reference's (.rodata).
  *
  * READS stay inside the buffers: frame rows are read as aligned words only up to the word that
- *   holds the row's last pixel; the flow and coefficient rows only inside their width.
+ *   holds the row's last pixel; the coefficient rows only inside their width; the flow rows
+ *   inside their width but for one word after the row above each output row (the iteration's
+ *   load ahead, unused; the next row of uv_in follows it).
  */
 
 /* ---------------------------------------------------------------------------------------------
