@@ -63,8 +63,8 @@
  *
  * READS stay inside the buffers: frame rows are read as aligned words only up to the word that
  *   holds the row's last pixel; the coefficient rows only inside their width; the flow rows
- *   inside their width but for one word after the row above each output row (the iteration's
- *   load ahead, unused; the next row of uv_in follows it).
+ *   inside their width but for one word after the row above each output row (row 0 for row 0;
+ *   the iteration's load ahead, unused; the next row of uv_in follows it).
  */
 
 /* ---------------------------------------------------------------------------------------------
