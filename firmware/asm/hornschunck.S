@@ -3,12 +3,25 @@
  * reference, which is written one Blackfin operation per helper so that these instruction
  * sequences reproduce it.
  *
- * CYCLES (bfbench bench, simulator cycles per call, empty-call overhead subtracted; c/px per frame
- * pixel; C = the reference built with bfin-elf-gcc -O2):
+ * CYCLES (bfbench bench, per call, empty-call overhead subtracted; c/px per frame pixel; C = the
+ *   reference built with bfin-elf-gcc -O2). Modelled BF537 cycles (--timing bf537), frames,
+ *   coefficients and flow in SDRAM through the data cache, as the bench places them:
+ *                    160x120               320x240
+ *   hs_iterate     1,192,945  (62.13)    4,667,111  (60.77)    bound 10
+ *   hs_prepare     1,169,693  (60.92)    4,635,194  (60.35)    bound 17
+ *   hornschunck   13,199,603 (687.5)    52,961,454 (689.6)     bound 118, N = 10
+ *   Where the modelled cycles go (the same calls with one charge of the model turned off):
+ *   hs_prepare at 160x120: 343,133 issued (the simulator's own count), 607 address-register
+ *   stalls (the first pair and the tail of each row), 1,795 sub-bank collisions (two cached
+ *   rows loaded in one issue in passes A and B), 824,158 SDRAM line fills and write-backs
+ *   through the cache; hs_iterate: 195,564 issued, no stalls, 107 collisions (first and last
+ *   pixels), 997,274 SDRAM; hornschunck: 2,318,656 issued, 607 stalls, 2,912 collisions, 10.88M
+ *   SDRAM. So the model's cost is the memory, which streaming row bands into L1 by DMA (MEMORY
+ *   below) would hide. The simulator's own counts (data as if in L1):
  *                    160x120               320x240               640x480
  *   hs_iterate       195,564  (10.19)      775,045  (10.09)      3,086,004  (10.05)   C ~304 c/px
- *   hs_prepare       343,014  (17.87)    1,338,774  (17.43)      5,288,694  (17.22)   C ~345 c/px
- *   hornschunck    2,318,654 (120.76)    9,167,184 (119.36)     36,457,814 (118.68)   N = 10,
+ *   hs_prepare       343,133  (17.87)    1,339,013  (17.44)      5,289,173  (17.22)   C ~345 c/px
+ *   hornschunck    2,318,656 (120.76)    9,167,186 (119.36)     36,457,814 (118.68)   N = 10,
  *                                                                          C ~3380 c/px
  * LOWER BOUNDS. One issue per cycle: one 32-bit ALU/MAC instruction with up to two loads, or one
  *   load and one store; 16-bit instructions (pointer moves, lone loads/stores) issue alone.
@@ -31,7 +44,10 @@
  *        of the one of (gt1:gt0)) + 4 pointer instructions that cannot issue in parallel:
  *        P0 = SIGNBITS, P0 = counts + 4 P0 (a 12-entry table gives k, k - 5 and 2k - 20 for
  *        three loads riding along, cheaper than computing them), P1 = index,
- *        P1 = rsqrt table + 2 P1.
+ *        P1 = rsqrt table + 2 P1. Each pointer is used in the address stage four cycles after
+ *        its move from a data register (GCC's bfin_adjust_cost, the model: 4 cycles), taken by
+ *        the other pixel's work (the phase-2 pipeline below); back to back, the two moves per
+ *        pixel would stall 8 cycles a pixel.
  *     Measured 17.22-17.87: ~138 cycles per row of set-up, branches and the border pixels.
  *   Full kernel: 1 (zeroing the start flow, a store per pixel) + 17 + 10 N: 118 at N = 10;
  *     measured 118.68-120.76.
@@ -40,13 +56,15 @@
  *
  * MEMORY. The kernels work wherever the caller puts the buffers. At the robot's sizes frames,
  *   coefficients and flow live in SDRAM (working set 14 bytes per pixel: 263 KB at 160x120, past
- *   the 64 KB of L1 data); the bench places them there. The simulator charges no SDRAM latency,
- *   so these counts are those of data in L1; on the chip the row-band DMA scheme of the header
- *   (22 bytes x width per iteration band in L1) would be needed to approach them. The count table
- *   is in L1 data bank A; the rsqrt table is the C reference's (.rodata).
+ *   the 64 KB of L1 data); the bench places them there. The simulator's own counts are those of
+ *   data in L1; the modelled ones pay SDRAM through the cache, which the row-band DMA scheme of
+ *   the header (22 bytes x width per iteration band in L1) would hide. The count table is in L1
+ *   data bank A; the rsqrt table is the C reference's (.rodata).
  *
  * READS stay inside the buffers: frame rows are read as aligned words only up to the word that
- *   holds the row's last pixel; the flow and coefficient rows only inside their width.
+ *   holds the row's last pixel; the coefficient rows only inside their width; the flow rows
+ *   inside their width but for one word after the row above each output row (row 0 for row 0;
+ *   the iteration's load ahead, unused; the next row of uv_in follows it).
  */
 
 /* ---------------------------------------------------------------------------------------------
@@ -54,15 +72,19 @@
  * --------------------------------------------------------------------------------------------- */
 
 /* One interior pixel. Column sums cl = ra, c0 = rb (carried), cr = rc (computed here); on entry
- * R0 = G and R3.L = e of the previous pixel, A1:A0 its exact sums, I2 at M(x-1). */
+ * R0 = G and R3.L = e of the previous pixel, A1:A0 its exact sums, R2 = T(x+1), I2 at M(x-1).
+ * One memory access an issue (T(x+2) loaded a pixel ahead, the output stored in the sixth):
+ * two in one issue cost a cycle whenever they meet in one L1 or data-cache sub-bank, as the
+ * rows of one flow buffer do. The last pixel's T(x+2) is one word past the row (row y-1, or
+ * row 0 for y = 0): inside uv_in, row y follows; it is not used. */
 .macro HS_PIX ra, rb, rc
-	R3.H = (A1 -= R3.L * R0.H), R3.L = (A0 -= R3.L * R0.L) (IH) || R0 = [I0++] || R1 = [I1++];
-	\rc = R0 +|+ R1 (S) || [P1++] = R3 || R0 = [I2 ++ M0];
+	R3.H = (A1 -= R3.L * R0.H), R3.L = (A0 -= R3.L * R0.L) (IH) || R1 = [I1++];
+	\rc = R2 +|+ R1 (S) || R0 = [I2 ++ M0];
 	A1 = \ra\().H * R7.L, A0 = \ra\().L * R7.L || R1 = [I2 ++ M1];
-	R2 = R0 +|+ R1 (S) || R1 = W[P0++] (X) || R0 = [I3++];
-	A1 += \rc\().H * R7.L, A0 += \rc\().L * R7.L;
-	A1 += R2.H * R7.H, A0 += R2.L * R7.H;
-	R3.H = (A1 += \rb\().H * R7.H), R3.L = (A0 += \rb\().L * R7.H);
+	R2 = R0 +|+ R1 (S) || R1 = W[P0++] (X);
+	A1 += \rc\().H * R7.L, A0 += \rc\().L * R7.L || R0 = [I3++];
+	A1 += R2.H * R7.H, A0 += R2.L * R7.H || [P1++] = R3;
+	R3.H = (A1 += \rb\().H * R7.H), R3.L = (A0 += \rb\().L * R7.H) || R2 = [I0++];
 	R3.H = R3.H * R0.H, R3.L = R3.L * R0.L (S2RND);
 	R3.L = R3.L + R3.H (S);
 .endm
@@ -94,7 +116,7 @@
 	r3.h = (a1 += \x0\().h * r7.h), r3.l = (a0 += \x0\().l * r7.h);
 	r3.h = r3.h * r0.h, r3.l = r3.l * r0.l (s2rnd);
 	r3.l = r3.l + r3.h (s);
-	r3.l = r3.l + r1.l (s);
+	r3.l = r3.l + r1.l (s) || r2 = [i0++];           /* T(2), for pixel 1 */
 .if \m == 1
 	HS_PIX r6, r4, r5
 	r3.l = r3.l + r1.l (s);
@@ -234,7 +256,7 @@ _bvb_hs_iterate_asm:
 #define HS_W4      -8   /* 4 * width: offset of the gt row */
 #define HS_NGF     -12  /* full groups of 4 columns */
 #define HS_TAIL    -16  /* width - 4 * groups */
-#define HS_NPAIR   -20  /* full pairs of phase 2: (width - 1) >> 1 */
+#define HS_NMID    -20  /* phase-2 pairs with a pair after them: width / 2 - 1 */
 #define HS_ODD     -24  /* width & 1 */
 #define HS_FRAME   24
 
@@ -412,108 +434,173 @@ _bvb_hs_iterate_asm:
 .Lpb_done\tag:
 .endm
 
-/* Phase 2, steps 2-28 of a pixel pair (A = x, B = x + 1); step 1 (GA = C(x+1) +|- C(x)) is
- * done before. On entry R0 = GA, R4 = C(x+1), R1 = C(x+2), R6 = (q(x+1):q(x)),
- * R5 = (q(x+2):q(x+1)); R7.H = 0. With ahead = 1 the loads for the next pair ride along. */
-.macro HS_PAIR ahead
-	r1 = r1 +|- r4;                                 /* GB = (gy:gx) of B */
-	r2 = r6 +|+ r5;                                 /* (gtB:gtA) */
+/* Phase 2: from C and q (pass B) to the coefficients, in place, software-pipelined over pixel
+ * pairs (A = x, B = x + 1) so that no table pointer is used in the address stage within four
+ * cycles of being moved from a data register (the model's move-into-address-register stall,
+ * GCC bfin_adjust_cost: 4 cycles).
+ * Per pixel: G = C(x+1) +|- C(x), D = alpha2 + G.L^2 + G.H^2 (3 MAC), SB = SIGNBITS D; the
+ * count table pointer P = counts + 4 SB gives c = 2k - 20 ([P+48]), k ([P]) and k - 5
+ * ([P+2]); I = D lshift c; the rsqrt pointer Q = rsqrt + 2 I gives S; G = (G << k) * S
+ * (S2RND); per pair gt = (q(x+1):q(x)) +|+ (q(x+2):q(x+1)), each half shifted by its k - 5 and
+ * multiplied by its S. One iteration of 28 cycles holds pair j's A chain, pair j's B chain up to
+ * its Q move, and pair j-1's B tail (Q, S, k and k - 5, the multiplies, its stores): the four
+ * cycles after each pointer move are taken by the other pixel's work.
+ *   cycle  0-5  A: G, D, SB, P0 = SB          14-19  B: G, D, SB, P2 = SB
+ *          6-9  B(j-1): Q, G <<= k, * S, gt.H 20-23  A: Q, gt, G <<= k, * S
+ *         10-13 A: P0, [c], I, P1 = I         24-27  B: P2, gt.L (A), I, P1 = I
+ *   (11: gt * S of pair j-1)
+ * Registers: R0 G(A) / C(x), R1 G(B) / C(x+2), R2 gt, R3 (S_B:S_A), R4 C(x+1) / (q(x+2):q(x+1)),
+ * R5 the table values, R6 D / I, R7 (0:SB); P0, P2 the count pointers of A and B, P1 the rsqrt
+ * pointer (A's and B's never overlap); I0 C loads, I1 q loads, I2 (gy':gx') stores, I3 gt'
+ * stores; M0 = 8, M1 = 2.
+ * bp = 1: this iteration also finishes pair j-1's B. kind: 0 a pair with a pair after it,
+ * 1 the last pair before a lone last pixel (odd width), 2 the last pair (even width, its
+ * C(x+2) = C(x+1), q(x+2) = q(x+1)), 3 the lone last pixel (odd width; its partner is a copy
+ * of it whose results are dropped; the pad after its gt' is 0). */
+.macro HS_IT bp, kind, last=
+	r0 = r4 +|- r0;                                 /* G(A) */
 	a0 = r0.l * r0.l (is);
 	a0 += r0.h * r0.h (is);
-	r6 = (a0 += a1);                                /* D of A */
+	r6 = (a0 += a1);                                /* D(A) */
 	r7.l = signbits r6;
 	p0 = r7;
-	p0 = p4 + (p0 << 2);
-	a0 = r1.l * r1.l (is) || r4 = [p0 + 48];        /* c */
-	a0 += r1.h * r1.h (is) || r5 = [p0];            /* k */
-	r6 = lshift r6 by r4.l || r4 = w[p0 + 2] (x);   /* table index; t */
-	p1 = r6;
-	p1 = p5 + (p1 << 1);
-	r6 = (a0 += a1) || r3.l = w[p1];                /* D of B; S of A */
-	r7.l = signbits r6;
-	p0 = r7;
-	p0 = p4 + (p0 << 2);
-	r0 = ashift r0 by r5.l (v) || r5 = [p0 + 48];
-	r2.l = ashift r2.l by r4.l || r4 = [p0];
-	r6 = lshift r6 by r5.l || r5 = w[p0 + 2] (x);
-	p1 = r6;
-	p1 = p5 + (p1 << 1);
-.if \ahead
-	r0.h = r0.h * r3.l, r0.l = r0.l * r3.l (s2rnd) || r3.h = w[p1] || r6 = [i1++];
-	r1 = ashift r1 by r4.l (v) || r0 = [i0++] || [i2++] = r0;
-	r2.h = ashift r2.h by r5.l || r4 = [i0++] || r5.h = w[i1--];
-	r1.h = r1.h * r3.h, r1.l = r1.l * r3.h (s2rnd) || r5.l = w[i1++];
-	r2.h = r2.h * r3.h, r2.l = r2.l * r3.l (s2rnd) || r1 = [i0] || [i2++] = r1;
+.if \bp
+	p1 = p5 + (p1 << 1);                            /* Q of B(j-1) */
+	r1 = ashift r1 by r5.l (v) || r3.h = w[p1];     /* G(B(j-1)) <<= k; S */
+	r1.h = r1.h * r3.h, r1.l = r1.l * r3.h (s2rnd) || r5 = w[p2 + 2] (x);
+	r2.h = ashift r2.h by r5.l || [i2++] = r1;
 .else
-	r0.h = r0.h * r3.l, r0.l = r0.l * r3.l (s2rnd) || r3.h = w[p1];
-	r1 = ashift r1 by r4.l (v) || [i2++] = r0;
-	r2.h = ashift r2.h by r5.l;
-	r1.h = r1.h * r3.h, r1.l = r1.l * r3.h (s2rnd);
-	r2.h = r2.h * r3.h, r2.l = r2.l * r3.l (s2rnd) || [i2++] = r1;
+	/* the first pair of a row: the modifiers, in the cycles P0 needs */
+	r1 = 8;
+	m0 = r1;
+	r1 = 2;
+	m1 = r1;
+.endif
+	p0 = p4 + (p0 << 2);
+.if \bp
+.if \kind == 0
+	r2.h = r2.h * r3.h, r2.l = r2.l * r3.l (s2rnd) || r5 = [p0 + 48] || r1 = [i0++];
+.elseif \kind == 1
+	r2.h = r2.h * r3.h, r2.l = r2.l * r3.l (s2rnd) || r5 = [p0 + 48] || r1 = [i0];
+.else
+	r2.h = r2.h * r3.h, r2.l = r2.l * r3.l (s2rnd) || r5 = [p0 + 48];
+.endif
+	r6 = lshift r6 by r5.l || [i3++] = r2;          /* I(A) */
+.else
+.if \kind == 0
+	mnop || r5 = [p0 + 48] || r1 = [i0++];
+.elseif \kind == 1
+	mnop || r5 = [p0 + 48] || r1 = [i0];
+.else
+	r5 = [p0 + 48];
+.endif
+	r6 = lshift r6 by r5.l;
+.endif
+	p1 = r6;
+.if \kind <= 1
+	r1 = r1 +|- r4 || r5 = w[p0] (x) || r2 = [i1++];    /* G(B); k(A); (q(x+1):q(x)) */
+	a0 = r1.l * r1.l (is) || r4.h = w[i1--];
+	a0 += r1.h * r1.h (is) || r4.l = w[i1++];
+.elseif \kind == 2
+	r1 = r4 +|- r4 || r5 = w[p0] (x) || r2 = [i1 ++ m1];
+	a0 = r1.l * r1.l (is) || r4.h = w[i1];
+	a0 += r1.h * r1.h (is) || r4.l = w[i1];
+.else
+	r1 = r4 +|- r4 || r5 = w[p0] (x) || r2.l = w[i1];
+	a0 = r1.l * r1.l (is) || r4.l = w[i1];
+	a0 += r1.h * r1.h (is);
+.endif
+	r6 = (a0 += a1);                                /* D(B) */
+	r7.l = signbits r6;
+	p2 = r7;
+	p1 = p5 + (p1 << 1);                            /* Q(A) */
+	r2 = r2 +|+ r4 || r3.l = w[p1];                 /* gt; S(A) */
+.if \kind == 0
+	r0 = ashift r0 by r5.l (v) || r5 = w[p0 + 2] (x) || r4 = [i0--];
+.elseif \kind == 1
+	r0 = ashift r0 by r5.l (v) || r5 = w[p0 + 2] (x) || r4 = [i0];
+.else
+	r0 = ashift r0 by r5.l (v) || r5 = w[p0 + 2] (x);
+.endif
+	r0.h = r0.h * r3.l, r0.l = r0.l * r3.l (s2rnd);
+	p2 = p4 + (p2 << 2);
+	r2.l = ashift r2.l by r5.l || r5 = [p2 + 48] || [i2++] = r0;
+.if \kind == 0
+	r6 = lshift r6 by r5.l || r5 = w[p2] (x) || r0 = [i0 ++ m0];
+.elseif \kind == 1
+	r6 = lshift r6 by r5.l || r5 = w[p2] (x) || r0 = [i0];
+.else
+	r6 = lshift r6 by r5.l || r5 = w[p2] (x);
+.endif
+.ifnb \last
+\last:
+.endif
+	p1 = r6;                                        /* I(B) */
+.endm
+
+/* The tail of the last pair's B (single = 1: the lone pixel's gt' word only). */
+.macro HS_DRAIN single
+.if \single
+	r2.l = r2.l * r3.l (s2rnd);
+	r2 = r2.l (z);
+	[i3++] = r2;
+.else
+	p1 = p5 + (p1 << 1);
+	r1 = ashift r1 by r5.l (v) || r3.h = w[p1];
+	r1.h = r1.h * r3.h, r1.l = r1.l * r3.h (s2rnd) || r5 = w[p2 + 2] (x);
+	r2.h = ashift r2.h by r5.l || [i2++] = r1;
+	r2.h = r2.h * r3.h, r2.l = r2.l * r3.l (s2rnd);
+	[i3++] = r2;
 .endif
 .endm
 
-/* Phase 2 of one row: from C and q (pass B) to the coefficients, in place. In: P3 = row. */
+/* Phase 2 of one row. In: P3 = row. floor(width / 2) - 1 pairs with a pair after them, then
+ * the last pair (even width) or the last pair and the lone last pixel (odd width). */
 .macro HS_PHASE2 tag
+	i0 = p3;                        /* C loads */
+	i2 = p3;                        /* (gy':gx') stores */
 	r0 = p3;
-	i0 = r0;                        /* C loads */
-	i2 = r0;                        /* (gy':gx') stores */
 	r1 = [fp + HS_W4];
 	r0 = r0 + r1;
 	i1 = r0;                        /* q loads */
 	i3 = r0;                        /* gt' stores */
 	r7 = 0;
-	p3 = [fp + HS_NPAIR];
+	p3 = [fp + HS_NMID];
+	r0 = [i0++];
+	r4 = [i0++];
 	cc = p3 == 0;
-	if cc jump .Lp2_even\tag;
+	if cc jump .Lp2_t0\tag;
+	HS_IT 0, 0
 	p3 += -1;
-	mnop || r0 = [i0++] || r6 = [i1++];
-	mnop || r4 = [i0++] || r5.h = w[i1--];
-	r0 = r4 +|- r0 || r1 = [i0] || r5.l = w[i1++];
 	cc = p3 == 0;
-	if cc jump .Lp2_last\tag;
+	if cc jump .Lp2_t1\tag;
 	lsetup (.Lp2_pair\tag, .Lp2_pair_end\tag) lc0 = p3;
 .Lp2_pair\tag:
-	HS_PAIR 1
-.Lp2_pair_end\tag:
-	r0 = r4 +|- r0 || [i3++] = r2;
-.Lp2_last\tag:
-	HS_PAIR 0
-	r3 = [fp + HS_ODD];
-	cc = r3 == 0;
-	[i3++] = r2;
-	if cc jump .Lp2_even\tag (bp);
-	/* Odd width: pixel width-1 alone, its right neighbour itself; the pad after gt' is 0. */
-	r0 = [i0];
-	r2 = 0;
-	r2.l = w[i1];
-	r0 = r0 +|- r0;
-	r2 = r2 +|+ r2;
-	a0 = r0.l * r0.l (is);
-	a0 += r0.h * r0.h (is);
-	r6 = (a0 += a1);
-	r7.l = signbits r6;
-	p0 = r7;
-	p0 = p4 + (p0 << 2);
-	r4 = [p0 + 48];
-	r6 = lshift r6 by r4.l || r5 = [p0];
-	p1 = r6;
-	p1 = p5 + (p1 << 1);
-	r0 = ashift r0 by r5.l (v) || r4 = w[p0 + 2] (x);
-	r2.l = ashift r2.l by r4.l || r3.l = w[p1];
-	r0.h = r0.h * r3.l, r0.l = r0.l * r3.l (s2rnd);
-	r2.l = r2.l * r3.l (s2rnd) || [i2++] = r0;
-	[i3] = r2;
+	HS_IT 1, 0, .Lp2_pair_end\tag
+.Lp2_t1\tag:
+	r6 = [fp + HS_ODD];
+	cc = r6 == 0;
+	if !cc jump .Lp2_o1\tag;
+	HS_IT 1, 2
+	HS_DRAIN 0
 	jump .Lp2_done\tag;
-.Lp2_even\tag:
-	/* Even width: the pair width-2, width-1 with C(width) = C(width-1), q(width) = q(width-1). */
-	r0 = [i0++];
-	r4 = [i0];
-	mnop || r1 = [i0] || r6 = [i1];
-	r0 = r4 +|- r0;
-	r5 = pack (r6.h, r6.h);
-	HS_PAIR 0
-	[i3] = r2;
+.Lp2_o1\tag:
+	HS_IT 1, 1
+.Lp2_single\tag:
+	HS_IT 1, 3
+	HS_DRAIN 1
+	jump .Lp2_done\tag;
+.Lp2_t0\tag:
+	/* width 2 or 3 */
+	r6 = [fp + HS_ODD];
+	cc = r6 == 0;
+	if !cc jump .Lp2_o0\tag;
+	HS_IT 0, 2
+	HS_DRAIN 0
+	jump .Lp2_done\tag;
+.Lp2_o0\tag:
+	HS_IT 0, 1
+	jump .Lp2_single\tag;
 .Lp2_done\tag:
 .endm
 
@@ -542,10 +629,9 @@ _bvb_hs_prepare_asm:
 	r4 = 3;
 	r4 = r4 & r2;
 	[fp + HS_TAIL] = r4;
-	r3 = r2;
+	r3 = r2 >> 1;
 	r3 += -1;
-	r3 >>= 1;
-	[fp + HS_NPAIR] = r3;
+	[fp + HS_NMID] = r3;
 	r3 = [fp + 52];
 	b3 = r3;                        /* stride */
 	r3 = [fp + 56];                 /* alpha2_q4, clamped to 1024..1048576 */
@@ -676,20 +762,23 @@ _bvb_hornschunck_asm:
 	if cc r3 = r0;
 	[fp + HS_NEXT] = r2;
 	[fp + HS_NEXT_STRIDE] = r3;
-	/* Zero flow to start from: width words per row of cur. */
+	/* Zero flow to start from: width words per row of cur (one I register walks the rows: no
+	 * pointer is moved from a data register per row). */
 	r0 = [fp + HS_CUR];
+	i0 = r0;
 	r1 = [fp + HS_CUR_STRIDE];
+	r1 = r1 - r7;
+	m0 = r1;                         /* stride - 4 width */
 	r2 = 0;
 	p1 = r4;
 	lc1 = r5;
 	lsetup (.Lhs_zrow, .Lhs_zrow_end) lc1;
 .Lhs_zrow:
-	p0 = r0;
 	lsetup (.Lhs_zpix, .Lhs_zpix) lc0 = p1;
 .Lhs_zpix:
-	[p0++] = r2;
+	[i0++] = r2;
 .Lhs_zrow_end:
-	r0 = r0 + r1;
+	i0 += m0;
 	/* prepare(i1, i2, width, height, stride, alpha2_q4, coef) */
 	r0 = [fp + 52];
 	[sp + 16] = r0;

@@ -1,8 +1,22 @@
 /* NCC matching (bvb/ncc.h) for the BF537.
  *
  * Cycles (bfbench bench: 32 points on a grid, r = 5 (11x11), s = 8 (289 candidates each), frame 2
- * = frame 1 (uniform noise) moved by (3, -2) plus noise; simulator cycles per call):
- *   160x120: 725,290 = 78.4 per candidate (C at -O2: 14,228,829 = 1538.6, 19.6x);
+ * = frame 1 (uniform noise) moved by (3, -2) plus noise; frames in SDRAM, scratch in L1 bank A).
+ * Modelled BF537 cycles (--timing bf537) per call:
+ *   160x120: 789,535 = 85.4 per candidate; 320x240: 837,089 = 90.5 (bound 60.5).
+ *   Where they go at 160x120 (the same call with one charge of the model turned off): 725,345
+ *   issued (the simulator's own count, 78.4 per candidate, below), ~56,000 SDRAM line fills of
+ *   the frames (the template and the search area of each point, through the data cache; 320x240
+ *   pays more of them), 6,678 sub-bank collisions (most of them the selection sweep, 145 a
+ *   point: it loads both numerators of a pair, one 8-byte record, in one issue), ~1,400
+ *   address-register stalls (per point set-up). With the banked scratch layout (bvb/ncc.h) the
+ *   MAC pass, passes 1 and 2 and the copy program make no same-sub-bank dual access (in one
+ *   sub-bank, T' against the search area's copies costs a cycle every other MAC). Bringing each
+ *   point's search area into L1 by DMA during the previous point, instead of the copy program's
+ *   byte loads through the cache, would take off the line fills: ~79 per candidate (an
+ *   estimate, 85.4 less the fills' 6.1, if the DMA cost the core nothing).
+ * Simulator cycles per call (--timing none, data as if in L1):
+ *   160x120: 725,345 = 78.4 per candidate (C at -O2: 14,228,829 = 1538.6, 19.6x);
  *   320x240 and 640x480: 78.5 per candidate (the work does not depend on the frame size).
  * Lower bound: a candidate is 121 multiply-accumulates and the two MAC units do two a cycle, so
  * 60.5 cycles per candidate (its loads, 121 data words and 61 template words per pair of
@@ -16,11 +30,12 @@
  * template at many offsets, and each of those costs an exact comparison (~200 cycles): on the
  * Middlebury pairs (RubberWhale, Grove2, Urban2, Dimetrodon, Hydrangea; 48 points, r = 5, s = 8)
  * 256 to 391 cycles per candidate, 4 to 6 times faster than the C reference there.
- * Working set: the scratch buffer, 11.1 KB for r = 5, s = 8 (L1 data bank A in the bench, frames
+ * ncc_scoremap (one point, every candidate scored exactly): 166,822 modelled cycles at 160x120
+ * (577 per score), 179,697 at 320x240; 164,439 issued, ~400 address-register stalls (one a
+ * candidate in _ncc_exactv), no collisions, the rest SDRAM.
+ * Working set: the scratch buffer, 13.1 KB for r = 5, s = 8 (L1 data bank A in the bench, frames
  * in SDRAM, read once per point: a byte per pixel of the search area and of the template). The
- * simulator models no stalls: on hardware the P-register loads of the copy program used as
- * addresses 2 to 6 cycles later, and L1 sub-bank conflicts between the template and the pixel
- * copies, add cycles.
+ * copy program's P-register loads are used as addresses 6 cycles later (no stall).
  *
  * Per point the work is split into passes over the scratch buffer:
  *   template   T' = N*T - ST (16-bit), flat and with padded rows; vt = N*STT - ST^2
@@ -111,7 +126,8 @@
 #define CTX_PRE 260   /* 1 when the spare holds the next point's search area */
 #define CTX_RECIP 264 /* ceil(2^16 / (2s+1)) */
 #define CTX_NCH 268   /* chunks of the copy program that are real */
-#define CTX_DUMMY 272 /* 36 bytes: where the program's idle chunks write */
+#define CTX_DUMMY 272 /* 36 bytes: where the program's idle chunks write (unbanked layout) */
+#define CTX_DUMMYP 312 /* the dummy area's address */
 #define CTX_SEGB 320  /* the selection sweep's pairs before the seed's column pair */
 #define CTX_SIZE 336
 #define CHUNK 18      /* pixels per chunk of the copy program */
@@ -392,6 +408,10 @@ _ncc_layout:
 	[p5 + CTX_RECIP] = r0;
 	r7 = [p5 + CTX_T0];
 	/* the copy program (r = 5, 5 <= s <= 10): a spare He, Ho and the program itself */
+	r0 = p5;
+	r1 = CTX_DUMMY;
+	r0 = r0 + r1;
+	[p5 + CTX_DUMMYP] = r0;
 	r0 = 0;
 	[p5 + CTX_PIPE] = r0;
 	[p5 + CTX_PRE] = r0;
@@ -407,16 +427,73 @@ _ncc_layout:
 	if cc jump .Ll_out;
 	r0 = 1;
 	[p5 + CTX_PIPE] = r0;
-	[p5 + CTX_HE2] = r7;
 	r2 = [p5 + CTX_L];
 	r5 = [p5 + CTX_HEROW];
 	r6 = r2;
 	r6 *= r5;            /* L * HEROW */
+	r0 = 8;
+	cc = r0 < r4;
+	if cc jump .Ll_flat;
+	/* s <= 8: the banked layout (bvb/ncc.h). Each 4 KB sub-bank of the scratch holds what is
+	 * never accessed in one cycle with the others': 0 the context, He, Ho; 1 the spare He, Ho;
+	 * 2 T' (TF, TP), the numerators, the copy program, CS2, the idle chunks' dummy area;
+	 * 3 NQ2. The MAC pass loads He or Ho with T' (or stores numerators, loads the program,
+	 * stores into the other pair), pass 1 loads He with CS2 or NQ2 stores, pass 2 loads CS2
+	 * with NQ2: never two in one sub-bank. */
+	r1 = p5;
+	r0 = 4096 (x);
+	r0 = r0 + r1;
+	[p5 + CTX_HE2] = r0;
+	r0 = r0 + r6;
+	r0 += 4;
+	[p5 + CTX_HO2] = r0;
+	r0 = 12288 (x);
+	r0 = r0 + r1;
+	[p5 + CTX_NQ2] = r0;
+	r7 = 8192 (x);
+	r7 = r7 + r1;
+	[p5 + CTX_TF] = r7;
+	r0 = 4 * 61;         /* (N + 1) / 2 words, r = 5 */
+	r7 = r7 + r0;
+	[p5 + CTX_TP] = r7;
+	r0 = 4 * 66 + 8;     /* w (r + 1) words, then the two words of the first (empty) stores */
+	r7 = r7 + r0;
+	[p5 + CTX_NP] = r7;
+	r0 = r4 << 1;
+	r0 += 1;
+	r0 *= r4;
+	r0 = r0 << 3;
+	r7 = r7 + r0;
+	r7 += 4;
+	[p5 + CTX_NS] = r7;
+	r0 = r4 << 1;
+	r0 += 2;
+	r0 = r0 << 2;
+	r7 = r7 + r0;
+	[p5 + CTX_TAB] = r7;
+	r0 = r2 << 2;
+	r1 = r4 << 1;
+	r0 = r0 + r1;
+	r0 += 1;
+	r1 = 12;
+	r0 *= r1;            /* 4L + 2s + 1 chunks */
+	r7 = r7 + r0;
+	[p5 + CTX_CS2] = r7;
+	r0 = r2;
+	r0 += 1;
+	r1 = [p5 + CTX_KSB];
+	r0 *= r1;
+	r7 = r7 + r0;
+	[p5 + CTX_DUMMYP] = r7;
+	jump .Ll_tab;
+.Ll_flat:
+	[p5 + CTX_HE2] = r7;
 	r7 = r7 + r6;
 	r7 += 4;
 	[p5 + CTX_HO2] = r7;
 	r7 = r7 + r6;
 	[p5 + CTX_TAB] = r7;
+.Ll_tab:
 	r0 = r2 << 1;        /* 2L chunks: [0, 18) and [L-18, L) of each row */
 	[p5 + CTX_NCH] = r0;
 	r1 = r4 << 1;
@@ -435,9 +512,7 @@ _ncc_layout:
 	p0 = r0;
 	p1 = [p5 + CTX_TAB];
 	r0 = [p5 + CTX_FRAME2];
-	r1 = p5;
-	r2 = CTX_DUMMY;
-	r1 = r1 + r2;
+	r1 = [p5 + CTX_DUMMYP];
 	lsetup (.Ll_d0, .Ll_d1) lc0 = p0;
 .Ll_d0:
 	[p1++] = r0;
@@ -1491,13 +1566,15 @@ _ncc_num:
 	r4 = r4 >> 29;       /* (e & 1) * 4 */
 	r3 = r3 + r4;
 	r4 = [p5 + CTX_NP];
-	jump .Ln_load;
+	r3 = r3 + r4;
+	p0 = r3;
+	jump .Ln_load;       /* (its cycles cover P0's move) */
 .Ln_single:
 	r3 = r1 << 2;
 	r4 = [p5 + CTX_NS];
-.Ln_load:
 	r3 = r3 + r4;
 	p0 = r3;
+.Ln_load:
 	r2 = [p0];
 	rts;
 
@@ -1874,8 +1951,8 @@ _bvb_ncc_scoremap_asm:
 	r2 = r0;
 	r0 = [p5 + CTX_T17];
 	r1 = [p5 + CTX_VT];
+	p3 = [p5 + CTX_RES];  /* (_ncc_score keeps P3) */
 	call _ncc_score;
-	p3 = [p5 + CTX_RES];
 	w[p3++] = r0;
 	[p5 + CTX_RES] = p3;
 	r1 = [p5 + CTX_S];

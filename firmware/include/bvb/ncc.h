@@ -45,8 +45,8 @@
  * Points that are not BVB_NCC_OK report dx = dy = score = 0. A flat template (vt = 0) reports
  * BVB_NCC_FLAT (every score would be 0).
  * scratch: BVB_NCC_SCRATCH_SIZE(r, s) bytes, 4-byte aligned (working buffers of the assembly;
- * the C reference does not use it). For r = 5, s = 8 it is 11,376 bytes: L1 data bank A in the
- * robot's firmware, frames in SDRAM. */
+ * the C reference does not use it). For r = 5, s = 8 it is 13,416 bytes (banked, below): L1 data
+ * bank A in the robot's firmware, frames in SDRAM. */
 #ifndef BVB_NCC_H
 #define BVB_NCC_H
 
@@ -68,8 +68,15 @@
  * pair of candidates of the column pairs that run it, at most 4L + 2s + 1 of them). */
 #define BVB_NCC_L(r, s) (2 * (s) + 2 * (r) + 1)
 #define BVB_NCC_PIPELINED(r, s) ((r) == 5 && (s) >= 5 && (s) <= 10)
+/* The banked layout (r = 5, 5 <= s <= 8, the robot's matcher): four 4 KB blocks, each holding
+ * buffers that are never accessed in one cycle with another in the same block (the context and
+ * the search area's copies; the spare copies; the template, numerators, copy program and column
+ * sums; the squared column sums), so that with the scratch at the start of a bank (within 350
+ * bytes after a 4 KB boundary) the kernel's dual accesses never meet in one L1 sub-bank. */
+#define BVB_NCC_BANKED(r, s) ((r) == 5 && (s) >= 5 && (s) <= 8)
 #define BVB_NCC_SCRATCH_SIZE(r, s)                                                                 \
-  (336 + 4 * BVB_NCC_L(r, s) * (BVB_NCC_L(r, s) + 1) + 4                                          \
+  (BVB_NCC_BANKED(r, s) ? 12288 + 8 * (BVB_NCC_L(r, s) + 1) * (((s) + 3) / 2) + 8 :                \
+  336 + 4 * BVB_NCC_L(r, s) * (BVB_NCC_L(r, s) + 1) + 4                                           \
    + 4 * (((2 * (r) + 1) * (2 * (r) + 1) + 1) / 2) + 4 * (2 * (r) + 1) * ((r) + 1)                \
    + 12 * (BVB_NCC_L(r, s) + 1) * (((s) + 3) / 2) + 4 * (2 * (s) + 2) * (2 * (s) + 2)               \
    + (BVB_NCC_PIPELINED(r, s)                                                                      \
