@@ -66,6 +66,8 @@
  * is what lets a single 16-cycle group keep both the x and the x-1 neighbours. */
 
 /* The stack frame both kernels share (the helpers below read it at [sp + F_*]). */
+#include "bvb/dma.h"
+
 #define F_C     0	/* 0x00FF00FF: the s16 loop's MIN constant, read at [SP] */
 #define F_SRC   4
 #define F_SS    8
@@ -93,7 +95,22 @@
 #define F_DIN   96	/* what the input, 8-bit output and int16 output pointers move */
 #define F_DOUT  100	/* from the end of a row of groups to the next row */
 #define F_DG    104
-#define LOCALS  112
+/* The DMA path of the u8 kernel (frames in SDRAM, scratch in L1): */
+#define F_IN0   112	/* the L1 band buffers of band j (input, output) and of band j+1 */
+#define F_IN1   116
+#define F_OUT0  120
+#define F_OUT1  124
+#define F_JOB   128	/* the DMA job, or 0 on the other paths */
+#define F_B     132	/* rows per band at most */
+#define F_P     136	/* band rows' stride: 4 G */
+#define F_OSRC  140	/* src and src_stride (F_SRC, F_SS then name band 0 in L1) */
+#define F_OSS   144
+#define F_S     148	/* band j: first input row, rows */
+#define F_N     152
+#define F_S1    156	/* band j+1 */
+#define F_N1    160
+#define F_X     164	/* a struct bvb_dma_xfer, 24 bytes */
+#define LOCALS  192
 #define ARGS    (LOCALS + 36)	/* [sp + ARGS + 12]: the 4th argument */
 
 	.section .l1.text, "ax"
@@ -105,7 +122,8 @@ _bvb_sobel3x3_u8_asm:
 	[--sp] = fp;
 	[--sp] = rets;			/* the helpers below are called */
 	sp += -64;
-	sp += -48;			/* LOCALS */
+	sp += -64;
+	sp += -64;			/* LOCALS */
 	[sp + F_SRC] = r0;
 	[sp + F_SS] = r1;
 	[sp + F_DST] = r2;
@@ -138,6 +156,26 @@ _bvb_sobel3x3_u8_asm:
 	r0 = r0 + r1;
 	r0 = r0 + r4;
 	[sp + F_END] = r0;		/* src + (h-1) ss + w */
+
+	/* Frames in SDRAM and the scratch in L1: the banded DMA path (.Ldma_* below). Band 0
+	 * (input rows 0 and 1) is on its way while the lane masks are made. */
+	call .Ldplan;
+	r0 = [sp + F_JOB];
+	cc = r0 == 0;
+	if cc jump .Lmasks;
+	r0 = 0;
+	r1 = 0;
+	r2 = [sp + F_IN0];
+	r3 = 2;
+	call .Lsdin;
+	r0 = [sp + F_JOB];
+	r1 = 1;
+	call _bvb_dma_start;
+.Lmasks:
+	r4 = [sp + F_W];
+	r5 = [sp + F_H];
+	r6 = [sp + F_SCR];		/* the scratch, or on the DMA path the ring */
+	r7 = [sp + F_G];
 
 	/* The lane masks of the ring blocks: 255 where the output is an interior pixel, 0 on
 	 * the ring (x = 0 and x >= w-1); MIN with them puts the left and right border zeros in
@@ -199,6 +237,9 @@ _bvb_sobel3x3_u8_asm:
 	r0 = r0 & r2;
 	[p0 + 16] = r0;
 
+	r0 = [sp + F_JOB];
+	cc = r0 == 0;
+	if !cc jump .Ldma_pre;
 	/* Rows 0 and h-1 are 0. */
 	p0 = [sp + F_DST];
 	p1 = r4;
@@ -213,6 +254,7 @@ _bvb_sobel3x3_u8_asm:
 	p1 = [sp + F_W];
 	call .Lzero;
 
+.Lpass1_go:
 	/* The first row of blocks, from input rows 0 and 1: H0 into the B slots, then
 	 * H1 into the H slots and 2 (H0 + H1) into the B slots. */
 	r0 = [sp + F_SRC];
@@ -301,6 +343,9 @@ _bvb_sobel3x3_u8_asm:
 	m0 = 8 (x);
 	m1 = -6 (x);
 	m2 = -4 (x);
+	r0 = [sp + F_JOB];
+	cc = r0 == 0;
+	if !cc jump .Ldma_bands;
 
 	/* One stream over the whole frame when rows are contiguous and dst rows aligned. */
 	r4 = [sp + F_W];
@@ -498,13 +543,320 @@ _bvb_sobel3x3_u8_asm:
 	l1 = r0;
 	l2 = r0;
 	l3 = r0;
-	sp += 56;
-	sp += 56;			/* LOCALS */
+	sp += 60;
+	sp += 60;
+	sp += 60;
+	sp += 12;			/* LOCALS */
 	rets = [sp++];
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;
 	.size _bvb_sobel3x3_u8_asm, . - _bvb_sobel3x3_u8_asm
+
+	/* The banded DMA path of the u8 kernel (bvb/sobel.h, "Working set and memory").
+	 *
+	 * .Ldplan: F_JOB = the job when src or dst is in SDRAM, the scratch in L1 data SRAM and
+	 * DMA reaches all three, else 0 (the direct paths above). It places in the scratch the
+	 * ring with the boundary between its two rows on a 4 KB sub-bank boundary (I2 and I3,
+	 * which load and store in the same cycles, then always work in different sub-banks), the
+	 * band buffers from the sub-bank after the ring's second (so that the band loads beside
+	 * I2 and the band stores beside I3 never share theirs): two input buffers of B rows, 8
+	 * bytes of over-read room, two output buffers of B + 1 rows (the last band's zero row),
+	 * then the job; F_SCR becomes the ring. Rows in L1 are P = 4 G bytes apart, so a band of
+	 * rows is one stream of groups for .Lseg whatever the frame's strides. */
+#define Q 4	/* the frame is 4 bytes further while a subroutine has RETS pushed */
+.Ldplan:
+	[--sp] = rets;
+	r0 = 0;
+	[sp + Q + F_JOB] = r0;
+	r2.l = 0;
+	r2.h = 0x0200;			/* the end of SDRAM */
+	r0 = [sp + Q + F_SRC];
+	r1 = [sp + Q + F_DST];
+	cc = r0 < r2 (iu);
+	if cc jump .Ldp_f;
+	cc = r1 < r2 (iu);
+	if !cc jump .Ldp_x;		/* both frames in L1 (or the window): read in place */
+.Ldp_f:
+	r7 = [sp + Q + F_G];
+	r6 = r7 << 2;			/* P */
+	[sp + Q + F_P] = r6;
+	r5 = 16;			/* B: BVB_SOBEL3X3_BAND_ROWS */
+	r0 = 160 (x);
+	r1 = 8;
+	cc = r0 < r6;
+	if cc r5 = r1;
+	r0 = 320 (x);
+	r1 = 4;
+	cc = r0 < r6;
+	if cc r5 = r1;
+	r0 = 640 (x);
+	r1 = 2;
+	cc = r0 < r6;
+	if cc r5 = r1;
+	[sp + Q + F_B] = r5;
+	r1 = r7 << 3;
+	r4 = r7 << 4;
+	r4 = r4 + r1;			/* 24 G: a row of the ring */
+	r0 = r5 << 2;
+	r0 += 2;
+	r0 *= r6;
+	r0 = r0 + r4;
+	r1 = 8192 + 120 (x);
+	r1 = r0 + r1;			/* BVB_SOBEL3X3_SCRATCH_SIZE */
+	r0 = [sp + Q + F_SCR];
+	r2.l = 0;
+	r2.h = 0xff80;
+	cc = r0 < r2 (iu);
+	if cc jump .Ldp_x;		/* scratch in SDRAM: nothing to gain */
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ldp_x;
+	r0 = [sp + Q + F_H];
+	r0 += -1;
+	r1 = [sp + Q + F_SS];
+	r0 *= r1;
+	r1 = [sp + Q + F_W];
+	r1 = r0 + r1;
+	r0 = [sp + Q + F_SRC];
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ldp_x;
+	r0 = [sp + Q + F_H];
+	r0 += -1;
+	r1 = [sp + Q + F_DS];
+	r0 *= r1;
+	r1 = [sp + Q + F_W];
+	r1 = r0 + r1;
+	r0 = [sp + Q + F_DST];
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ldp_x;
+	r0 = [sp + Q + F_SCR];
+	r0 = r0 + r4;
+	r1 = 4095 (x);
+	r0 = r0 + r1;
+	r1 = -4096 (x);
+	r0 = r0 & r1;			/* the boundary between the ring's rows */
+	r1 = r0 - r4;
+	[sp + Q + F_SCR] = r1;		/* the ring */
+	r1 = 4096 (x);
+	r0 = r0 + r1;
+	[sp + Q + F_IN0] = r0;
+	r1 = r5;
+	r1 *= r6;			/* B P */
+	r0 = r0 + r1;
+	[sp + Q + F_IN1] = r0;
+	r0 = r0 + r1;
+	r0 += 8;
+	[sp + Q + F_OUT0] = r0;
+	r0 = r0 + r1;
+	r0 = r0 + r6;
+	[sp + Q + F_OUT1] = r0;
+	r0 = r0 + r1;
+	r0 = r0 + r6;
+	[sp + Q + F_JOB] = r0;
+	r0 = [sp + Q + F_SRC];
+	[sp + Q + F_OSRC] = r0;
+	r0 = [sp + Q + F_SS];
+	[sp + Q + F_OSS] = r0;
+.Ldp_x:
+	rets = [sp++];
+	rts;
+
+	/* Band 0 (rows 0 and 1) has arrived when pass 1 starts on it in L1; band 1 comes in
+	 * meanwhile. Output row 0 (zero) goes out from slot 0 of band 0's output buffer. */
+.Ldma_pre:
+	p0 = [sp + F_OUT0];
+	r0 = 0;
+	p1 = [sp + F_G];
+	lsetup (.Ldz0, .Ldz0) lc0 = p1;
+.Ldz0:
+	[p0++] = r0;
+	call _bvb_dma_wait;
+	r0 = 0;
+	[sp + F_S] = r0;
+	r0 = 2;
+	[sp + F_N] = r0;
+	[sp + F_S1] = r0;
+	call .Lsdband;
+	[sp + F_N1] = r0;
+	r3 = r0;
+	r0 = 0;
+	r1 = 2;
+	r2 = [sp + F_IN1];
+	call .Lsdin;
+	r0 = [sp + F_JOB];
+	r1 = 1;
+	call _bvb_dma_start;
+	r0 = [sp + F_IN0];
+	[sp + F_SRC] = r0;
+	r0 = [sp + F_P];
+	[sp + F_SS] = r0;
+	r0 = -1;
+	[sp + F_END] = r0;		/* .Linrow: nothing to copy */
+	jump .Lpass1_go;
+
+	/* Band j (F_S, F_N rows, buffers F_IN0, F_OUT0) computed, band j+1 (F_S1, F_N1, F_IN1,
+	 * F_OUT1) in or arriving: wait for it, start the job that sends band j's output rows
+	 * out and brings band j+2 into band j's input buffer, compute band j+1, and so on. */
+.Ldma_bands:
+	r0 = [sp + F_IN0];
+	i0 = r0;			/* BYTEOP16P's byte offsets: rows in L1 are word aligned */
+	r0 += 1;
+	i1 = r0;
+.Ldb_loop:
+	r0 = [sp + F_S1];
+	r1 = [sp + F_H];
+	cc = r0 < r1;
+	if !cc jump .Ldb_last;
+	call _bvb_dma_wait;
+	call .Ldoutrows;
+	r0 = 0;
+	r2 = [sp + F_OUT0];
+	call .Lsdout;
+	r7 = 1;
+	r0 = [sp + F_S1];
+	r1 = [sp + F_N1];
+	r6 = r0 + r1;			/* band j+2 */
+	r1 = [sp + F_H];
+	cc = r6 < r1;
+	r5 = 0;
+	if !cc jump .Ldb_go;
+	r0 = r6;
+	call .Lsdband;
+	r5 = r0;
+	r3 = r0;
+	r0 = 1;
+	r1 = r6;
+	r2 = [sp + F_IN0];
+	call .Lsdin;
+	r7 = 2;
+.Ldb_go:
+	r0 = [sp + F_JOB];
+	r1 = r7;
+	call _bvb_dma_start;
+	/* band j+1 becomes band j */
+	r0 = [sp + F_S1];
+	[sp + F_S] = r0;
+	r0 = [sp + F_N1];
+	[sp + F_N] = r0;
+	[sp + F_S1] = r6;
+	[sp + F_N1] = r5;
+	r0 = [sp + F_IN0];
+	r1 = [sp + F_IN1];
+	[sp + F_IN0] = r1;
+	[sp + F_IN1] = r0;
+	r0 = [sp + F_OUT0];
+	r1 = [sp + F_OUT1];
+	[sp + F_OUT0] = r1;
+	[sp + F_OUT1] = r0;
+	p0 = [sp + F_IN0];
+	p1 = p0;
+	p2 = [sp + F_OUT0];
+	r0 = [sp + F_N];
+	r1 = [sp + F_G];
+	r0 *= r1;
+	r0 += -1;
+	p5 = r0;
+	call .Lseg;
+	jump .Ldb_loop;
+	/* The last band's output rows and the zero row h-1 after them. */
+.Ldb_last:
+	call _bvb_dma_wait;
+	call .Ldoutrows;
+	r0 = r3;
+	r1 = [sp + F_P];
+	r0 *= r1;
+	r1 = [sp + F_OUT0];
+	r0 = r0 + r1;
+	p0 = r0;
+	r0 = 0;
+	p1 = [sp + F_G];
+	lsetup (.Ldz1, .Ldz1) lc0 = p1;
+.Ldz1:
+	[p0++] = r0;
+	call .Ldoutrows;
+	r3 += 1;
+	r0 = 0;
+	r2 = [sp + F_OUT0];
+	call .Lsdout;
+	r0 = [sp + F_JOB];
+	r1 = 1;
+	call _bvb_dma_start;
+	call _bvb_dma_wait;
+	jump .Ldone;
+
+	/* Band j's output rows: r1 the first, r3 how many (band 0: row 0 alone; band j: rows
+	 * S-1 .. S+N-2). Clobbers R0. */
+.Ldoutrows:
+	r1 = [sp + F_S];
+	r3 = [sp + F_N];
+	r1 += -1;
+	cc = r1 < 0;
+	if !cc jump .Ldo_x;
+	r1 = 0;
+	r3 = 1;
+.Ldo_x:
+	rts;
+
+	/* r0 = s: the rows of the band that starts at input row s. Up to B, from 2 (rows 0 and 1,
+	 * pass 1) doubling, so the first band arrives soon; the last ones halve, so the last
+	 * output band leaves soon after the compute ends. Clobbers R1, R2. */
+.Lsdband:
+	r1 = [sp + F_B];
+	r1 = min (r0, r1);
+	r2 = 2;
+	r1 = max (r1, r2);
+	r2 = [sp + F_H];
+	r2 = r2 - r0;			/* rows left */
+	r0 = r1 << 1;
+	cc = r2 < r0;
+	if !cc jump .Lsb_x;
+	r2 += 1;
+	r1 = r2 >> 1;
+.Lsb_x:
+	r0 = r1;
+	rts;
+
+	/* Job slot r0: r3 input rows from row r1 into band buffer r2 (.Lsdin), or r3 output
+	 * rows from band buffer r2 to dst's rows r1 .. (.Lsdout). r0: bvb_dma_prepare's. */
+.Lsdin:
+	[--sp] = rets;
+	[sp + Q + F_X + DMAX_DST] = r2;
+	r2 = [sp + Q + F_P];
+	[sp + Q + F_X + DMAX_DS] = r2;
+	r2 = [sp + Q + F_OSS];
+	[sp + Q + F_X + DMAX_SS] = r2;
+	r1 *= r2;
+	r2 = [sp + Q + F_OSRC];
+	r1 = r1 + r2;
+	[sp + Q + F_X + DMAX_SRC] = r1;
+	jump .Lsd_go;
+.Lsdout:
+	[--sp] = rets;
+	[sp + Q + F_X + DMAX_SRC] = r2;
+	r2 = [sp + Q + F_P];
+	[sp + Q + F_X + DMAX_SS] = r2;
+	r2 = [sp + Q + F_DS];
+	[sp + Q + F_X + DMAX_DS] = r2;
+	r1 *= r2;
+	r2 = [sp + Q + F_DST];
+	r1 = r1 + r2;
+	[sp + Q + F_X + DMAX_DST] = r1;
+.Lsd_go:
+	[sp + Q + F_X + DMAX_ROWS] = r3;
+	r2 = [sp + Q + F_W];
+	[sp + Q + F_X + DMAX_W] = r2;
+	r1 = r0;
+	r0 = [sp + Q + F_JOB];
+	r2 = sp;
+	r3 = Q + F_X;
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	rets = [sp++];
+	rts;
+#undef Q
 
 	.global _bvb_sobel3x3_s16_asm
 	.type _bvb_sobel3x3_s16_asm, STT_FUNC
@@ -513,7 +865,8 @@ _bvb_sobel3x3_s16_asm:
 	[--sp] = fp;
 	[--sp] = rets;
 	sp += -64;
-	sp += -48;			/* LOCALS */
+	sp += -64;
+	sp += -64;			/* LOCALS */
 	[sp + F_SRC] = r0;
 	[sp + F_SS] = r1;
 	[sp + F_GX] = r2;
@@ -1081,8 +1434,10 @@ _bvb_sobel3x3_s16_asm:
 	l1 = r0;
 	l2 = r0;
 	l3 = r0;
-	sp += 56;
-	sp += 56;			/* LOCALS */
+	sp += 60;
+	sp += 60;
+	sp += 60;
+	sp += 12;			/* LOCALS */
 	rets = [sp++];
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
