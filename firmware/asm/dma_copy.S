@@ -22,7 +22,7 @@
 #define K_P 32			/* band rows' stride in L1: width rounded up to 4 */
 #define K_X 36			/* a struct bvb_dma_xfer, 24 bytes */
 #define KLOCALS 60
-#define KARGS (KLOCALS + 36)	/* [sp + KARGS + 12]: the 4th argument */
+#define KARGS (KLOCALS + 32)	/* [sp + KARGS + 12]: the 4th argument */
 
 	.section .l1.text, "ax"
 	.align 4

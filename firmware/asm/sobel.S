@@ -110,7 +110,9 @@
 #define F_S1    156	/* band j+1 */
 #define F_N1    160
 #define F_X     164	/* a struct bvb_dma_xfer, 24 bytes */
-#define LOCALS  192
+#define F_K0    188	/* what job slots 0 and 1 were last prepared for: 2 rows + (1 in, 0 out) */
+#define F_K1    192
+#define LOCALS  200
 #define ARGS    (LOCALS + 36)	/* [sp + ARGS + 12]: the 4th argument */
 
 	.section .l1.text, "ax"
@@ -123,7 +125,8 @@ _bvb_sobel3x3_u8_asm:
 	[--sp] = rets;			/* the helpers below are called */
 	sp += -64;
 	sp += -64;
-	sp += -64;			/* LOCALS */
+	sp += -64;
+	sp += -8;			/* LOCALS */
 	[sp + F_SRC] = r0;
 	[sp + F_SS] = r1;
 	[sp + F_DST] = r2;
@@ -546,7 +549,7 @@ _bvb_sobel3x3_u8_asm:
 	sp += 60;
 	sp += 60;
 	sp += 60;
-	sp += 12;			/* LOCALS */
+	sp += 20;			/* LOCALS */
 	rets = [sp++];
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
@@ -569,6 +572,9 @@ _bvb_sobel3x3_u8_asm:
 	[--sp] = rets;
 	r0 = 0;
 	[sp + Q + F_JOB] = r0;
+	r0 = -1;
+	[sp + Q + F_K0] = r0;
+	[sp + Q + F_K1] = r0;
 	r2.l = 0;
 	r2.h = 0x0200;			/* the end of SDRAM */
 	r0 = [sp + Q + F_SRC];
@@ -823,6 +829,7 @@ _bvb_sobel3x3_u8_asm:
 	 * rows from band buffer r2 to dst's rows r1 .. (.Lsdout). r0: bvb_dma_prepare's. */
 .Lsdin:
 	[--sp] = rets;
+	p0 = 1;
 	[sp + Q + F_X + DMAX_DST] = r2;
 	r2 = [sp + Q + F_P];
 	[sp + Q + F_X + DMAX_DS] = r2;
@@ -835,6 +842,7 @@ _bvb_sobel3x3_u8_asm:
 	jump .Lsd_go;
 .Lsdout:
 	[--sp] = rets;
+	p0 = 0;
 	[sp + Q + F_X + DMAX_SRC] = r2;
 	r2 = [sp + Q + F_P];
 	[sp + Q + F_X + DMAX_SS] = r2;
@@ -848,12 +856,28 @@ _bvb_sobel3x3_u8_asm:
 	[sp + Q + F_X + DMAX_ROWS] = r3;
 	r2 = [sp + Q + F_W];
 	[sp + Q + F_X + DMAX_W] = r2;
+	/* the slot's key, 2 rows + direction: the same as last time, only the addresses move */
 	r1 = r0;
+	r2 = r3 << 1;
+	r0 = p0;
+	r2 = r2 + r0;
+	p0 = sp;
+	p1 = r1;
+	p1 = p0 + (p1 << 2);		/* F_K0 or F_K1 */
+	r0 = [p1 + Q + F_K0];
+	[p1 + Q + F_K0] = r2;
+	cc = r0 == r2;
 	r0 = [sp + Q + F_JOB];
 	r2 = sp;
 	r3 = Q + F_X;
 	r2 = r2 + r3;
+	if cc jump .Lsd_move;
 	call _bvb_dma_prepare;
+	rets = [sp++];
+	rts;
+.Lsd_move:
+	call _bvb_dma_move;
+	r0 = 0;
 	rets = [sp++];
 	rts;
 #undef Q
@@ -866,7 +890,8 @@ _bvb_sobel3x3_s16_asm:
 	[--sp] = rets;
 	sp += -64;
 	sp += -64;
-	sp += -64;			/* LOCALS */
+	sp += -64;
+	sp += -8;			/* LOCALS */
 	[sp + F_SRC] = r0;
 	[sp + F_SS] = r1;
 	[sp + F_GX] = r2;
@@ -1437,7 +1462,7 @@ _bvb_sobel3x3_s16_asm:
 	sp += 60;
 	sp += 60;
 	sp += 60;
-	sp += 12;			/* LOCALS */
+	sp += 20;			/* LOCALS */
 	rets = [sp++];
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];

@@ -199,6 +199,29 @@ _bvb_dma_prepare:
 	rts;
 	.size _bvb_dma_prepare, . - _bvb_dma_prepare
 
+	/* r0 = job, r1 = slot k, r2 = struct bvb_dma_xfer *: moves slot k to x->src and x->dst,
+	 * keeping everything else it was prepared with. Clobbers R0-R2, P0, P1. */
+	.align 4
+	.global _bvb_dma_move
+	.type _bvb_dma_move, STT_FUNC
+_bvb_dma_move:
+	p0 = r2;
+	r2 = r1 << 4;
+	r1 <<= 1;
+	r2 = r2 - r1;			/* 14 k */
+	r0 = r0 + r2;
+	p1 = r0;
+	r1 = [p0 + DMAX_SRC];
+	r2 = [p0 + DMAX_DST];
+	w[p1 + DS_SAL] = r1;
+	r1 >>= 16;
+	w[p1 + DS_SAH] = r1;
+	w[p1 + (DST_SLOTS + DS_SAL)] = r2;
+	r2 >>= 16;
+	w[p1 + (DST_SLOTS + DS_SAH)] = r2;
+	rts;
+	.size _bvb_dma_move, . - _bvb_dma_move
+
 	/* r0 = job, r1 = n: runs slots 0 .. n-1. Clobbers R0-R3, P0-P2. */
 	.align 4
 	.global _bvb_dma_start

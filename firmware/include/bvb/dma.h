@@ -71,6 +71,10 @@ struct bvb_dma_xfer {
 };
 
 int32_t bvb_dma_prepare(void *job, int32_t k, const struct bvb_dma_xfer *x);
+/* Slot k again with x->src and x->dst, everything else as prepared: for the next band of the
+ * same shape. No checks: the caller keeps the new block where DMA reaches and at the
+ * alignment the slot was prepared for (moving by whole rows of the same frame does). */
+void bvb_dma_move(void *job, int32_t k, const struct bvb_dma_xfer *x);
 void bvb_dma_start(void *job, int32_t n);
 int32_t bvb_dma_wait(void);
 /* 1 when DMA reaches every byte of [p, p + bytes), else 0. */
