@@ -589,7 +589,7 @@ _bvb_sobel3x3_u8_asm:
 	[sp + Q + F_P] = r6;
 	r5 = 16;			/* B: BVB_SOBEL3X3_BAND_ROWS */
 	r0 = 160 (x);
-	r1 = 8;
+	r1 = 10;
 	cc = r0 < r6;
 	if cc r5 = r1;
 	r0 = 320 (x);
@@ -717,7 +717,14 @@ _bvb_sobel3x3_u8_asm:
 	cc = r0 < r1;
 	if !cc jump .Ldb_last;
 	call _bvb_dma_wait;
-	call .Ldoutrows;
+	r1 = [sp + F_S];		/* band j's output rows (.Ldoutrows) */
+	r3 = [sp + F_N];
+	r1 += -1;
+	cc = r1 < 0;
+	if !cc jump .Ldb_o (bp);
+	r1 = 0;
+	r3 = 1;
+.Ldb_o:
 	r0 = 0;
 	r2 = [sp + F_OUT0];
 	call .Lsdout;
@@ -800,15 +807,16 @@ _bvb_sobel3x3_u8_asm:
 	r3 = [sp + F_N];
 	r1 += -1;
 	cc = r1 < 0;
-	if !cc jump .Ldo_x;
+	if !cc jump .Ldo_x (bp);
 	r1 = 0;
 	r3 = 1;
 .Ldo_x:
 	rts;
 
-	/* r0 = s: the rows of the band that starts at input row s. Up to B, from 2 (rows 0 and 1,
-	 * pass 1) doubling, so the first band arrives soon; the last ones halve, so the last
-	 * output band leaves soon after the compute ends. Clobbers R1, R2. */
+	/* r0 = s: the rows of the band that starts at input row s: up to B, from 2 (rows 0 and 1,
+	 * pass 1) doubling (2, 2, 4, 8, ...), so that the compute starts soon. (Halving them
+	 * towards the end does not pay: each job then carries more than its band's compute
+	 * time covers.) Clobbers R1, R2. */
 .Lsdband:
 	r1 = [sp + F_B];
 	r1 = min (r0, r1);
@@ -816,13 +824,7 @@ _bvb_sobel3x3_u8_asm:
 	r1 = max (r1, r2);
 	r2 = [sp + F_H];
 	r2 = r2 - r0;			/* rows left */
-	r0 = r1 << 1;
-	cc = r2 < r0;
-	if !cc jump .Lsb_x;
-	r2 += 1;
-	r1 = r2 >> 1;
-.Lsb_x:
-	r0 = r1;
+	r0 = min (r1, r2);
 	rts;
 
 	/* Job slot r0: r3 input rows from row r1 into band buffer r2 (.Lsdin), or r3 output
@@ -871,7 +873,7 @@ _bvb_sobel3x3_u8_asm:
 	r2 = sp;
 	r3 = Q + F_X;
 	r2 = r2 + r3;
-	if cc jump .Lsd_move;
+	if cc jump .Lsd_move (bp);
 	call _bvb_dma_prepare;
 	rets = [sp++];
 	rts;

@@ -280,7 +280,7 @@ _bvb_dma_wait:
 .Lw_l:
 	r0 = w[p2 + D_IRQ] (z);
 	cc = bittst (r0, 0);
-	if cc jump .Lw_done;
+	if cc jump .Lw_done (bp);
 	cc = bittst (r0, 1);
 	if !cc jump .Lw_l (bp);
 	r0 = -1;
