@@ -19,12 +19,28 @@
  *
  * Memory. scratch: a ring of two rows of blocks (one block per 4 pixels: H, 2B and the two
  * lane-mask words for u8, 24 bytes; H and B for s16, 16 bytes), walked by I2 (the row above)
- * and I3 (the row being made) as circular buffers, one input line (the last input row is read
- * from a copy, so no load leaves src) and the output row buffers of the row-by-row path.
- * 56 ceil(w/4) + 16 bytes: 2.3 KB at width 160, 9 KB at 640 -- it belongs in L1. Frames are
- * read once and written once, in row order (bvb/sobel.h: a three-row L1 ring filled by DMA on
- * the robot); the simulator counts the same cycles wherever they are, and the check places them
- * in L1 when they fit, in SDRAM otherwise.
+ * and I3 (the row being made) as circular buffers; then, on the direct paths, one input line
+ * (the last input row is read from a copy, so no load leaves src) and the output row buffers
+ * of the row-by-row path; on the u8 kernel's DMA path the band buffers and a DMA job
+ * (BVB_SOBEL3X3_SCRATCH_SIZE: 23.1 KB at widths 320 and 640, 19.4 KB at 160 -- L1 bank B).
+ *
+ * The DMA path (u8; frames in SDRAM, scratch in L1 data SRAM; .Ldplan and .Ldma_* after the
+ * u8 entry). Input rows come into L1 in bands by memory DMA and output rows leave the same way
+ * (bvb/dma.h, bvb/sobel.h), on one stream: the job started before the core computes band j+1
+ * sends band j's output rows and then brings band j+2 into the buffer band j has left. In L1
+ * the rows are P = 4 G bytes apart, so .Lseg runs each band as one stream of groups, the ring
+ * continuing from band to band. Layout, for the collision rule of the model (two accesses of
+ * one issue in one 4 KB sub-bank: +1 cycle): the ring's two rows on either side of a sub-bank
+ * boundary (I2 and I3 always in different sub-banks: they pair in 6 of the loop's 16 issues)
+ * and the band buffers from the sub-bank after the ring's second (the band loads pair with I2,
+ * the output store with I3): 317 collisions in the whole simulator run of a 320x240 call
+ * (--timing-report), against 114,319 with the ring at the start of the scratch (one
+ * sub-bank; 439,001 cycles instead of 329,902). Bands: 2, 2, 4, 8 rows, then BVB_SOBEL3X3_BAND_ROWS (10 at width 320).
+ * The core's work per band: wait for the job, re-address (bvb_dma_move) or prepare its two
+ * transfers, start it (5 MMR writes), .Lseg's prologue and epilogue: about 430 cycles under the
+ * model. The stream's per job: 10 SCLK to start, 4 descriptors of 7 halfwords, then 2 bytes per
+ * SCLK; in + out is 2 bytes a pixel, 4 core cycles at CCLK:SCLK = 4, the same as the compute:
+ * neither has room for the other's overheads, so the two are balanced band by band.
  *
  * Lower bound (16 and 18 instructions per 4 pixels above, one 32-bit ALU/MAC instruction per
  * cycle): 4 cycles per interior pixel for u8, 4.5 for s16 with the magnitude. Memory does not
@@ -35,22 +51,35 @@
  * pixel for the 16-bit add, 0.25 for the byte pair sums); only the add/sub pairs of gx and gy
  * fit the quad instruction. (ADI's dual-MAC 3x3 convolution: 4.5 cycles per pixel for one
  * mask.) Without the magnitude, s16 needs 24 memory slots per group (12 cycles); its loop
- * takes 14 (8 data registers). The schedules assume the simulator's timing: load-use
- * latencies and L1 sub-bank conflicts (I2 and I3 load in the same cycle; on hardware the two
- * rows of the ring would go to different 4 KB sub-banks) are not modelled and not avoided.
+ * takes 14 (8 data registers). The loops load no address register they use at once; their
+ * L1 sub-bank collisions are avoided by placement on the u8 DMA path only (above).
  *
- * Measured (bfbench bench, frames contiguous: strides == width):
- *   sobel3x3_u8    160x120      76,588 cycles  3.99 per pixel  (C -O2: 1,946,028, 25.4x)
- *                  320x240     306,348         3.99            (C: 7,885,188, 25.7x)
- *                  640x480   1,226,668         3.99            (C: 31,744,308, 25.9x)
- *   sobel3x3_s16   160x120      87,422         4.55 with mag   (C: 2,045,839, 23.4x)
- *                  320x240     347,142         4.52            (C: 8,276,799, 23.8x)
- *                  640x480   1,384,982         4.51            (C: 33,295,519, 24.0x)
- *                  without mag: 68,076 / 270,076 / 1,077,276 (3.55 / 3.52 / 3.51 per pixel)
+ * Measured under the model (bfbench bench, --timing bf537, frames contiguous in SDRAM: strides
+ * == width; the simulator's own count, --timing none, after it):
+ *   sobel3x3_u8    160x120      90,417 cycles  4.71 per pixel (bound 3.88)   sim  83,185
+ *     DMA path,    320x240     329,902         4.30           (bound 3.94)   sim 318,345
+ *     scratch L1B  640x480   1,297,167         4.22           (bound 3.97)   sim 1,269,315
+ *     (C -O2 from SDRAM: 1,768,035 / 7,123,962 / 28,567,030; 19.6x, 21.6x, 22.0x)
+ *     Where the 320x240 cycles go, over the bound's 302,600 (interior pixels x 4): the loop's
+ *     16 cycles per group on the border columns too (+2,000); pass 1, the lane masks and the
+ *     plan (about 2,500); the core's work per band (27 bands x about 430: 11,600); waiting for
+ *     the stream (11,500 modelled minus sim, with the MMR accesses): band 0 (2 rows) before
+ *     pass 1 can start, bands 2 and 3 whose jobs carry more than 2 and 4 rows of compute
+ *     cover, the last band's 4 rows against the 10 of the band before, and the last 5 output
+ *     rows after the compute; 317 L1 collisions. At 160x120 the fill and the end weigh twice
+ *     as much per pixel; at 640x480 half.
+ *     Before the DMA path (frames read in place from SDRAM through the data cache, scratch in
+ *     SDRAM): 224,114 / 833,597 / 3,395,439 (11.67 / 10.85 / 11.05 per pixel).
+ *   sobel3x3_s16 (no DMA path yet: reads and writes the frames in place through the data
+ *     cache) 160x120 863,798 (44.99 per pixel), 320x240 3,167,664 (41.25), 640x480
+ *     14,218,111 (46.28); in L1, without the model: 87,422 / 347,146 / 1,384,986 (4.55 / 4.52
+ *     / 4.51 per pixel with the magnitude), without mag 68,076 / 270,076 / 1,077,276.
  *   The inner loop is 16 (u8), 14 or 18 (s16) cycles per 4 pixels, run as one stream over the
- *   frame; the rest is the first row of blocks (9 cycles per 4 pixels), the ring's lane masks,
- *   the zero rows and, for s16, the border columns (7 cycles a row).
- *   Other layouts (same method, measured with the bench's frames re-laid out):
+ *   frame (u8 DMA path: over each band); the rest is the first row of blocks (9 cycles per 4
+ *   pixels), the ring's lane masks, the zero rows and, for s16, the border columns (7 cycles a
+ *   row).
+ *   Other layouts, on the direct paths (simulator's counts, same method, the bench's frames
+ *   re-laid out; the DMA path runs every layout as the contiguous one):
  *   - rows padded, strides multiples of 4, outputs 4-byte aligned, width a multiple of 4: the
  *     loop runs on from row to row, only its pointers move (5-8 cycles a row): u8 at 160x120
  *     with 16 bytes of padding 77,279 (4.02 per pixel), s16 88,696 (4.62);
