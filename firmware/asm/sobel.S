@@ -765,10 +765,14 @@ _bvb_sobel3x3_u8_asm:
 	cc = r6 < r1;
 	r5 = 0;
 	if !cc jump .Ldb_go;
-	r0 = r6;
-	call .Lsdband;
-	r5 = r0;
-	r3 = r0;
+	r1 = [sp + F_B];		/* .Lsdband */
+	r1 = min (r6, r1);
+	r2 = 2;
+	r1 = max (r1, r2);
+	r2 = [sp + F_H];
+	r2 = r2 - r6;
+	r5 = min (r1, r2);
+	r3 = r5;
 	r0 = 1;
 	r1 = r6;
 	r2 = [sp + F_IN0];
@@ -860,6 +864,7 @@ _bvb_sobel3x3_u8_asm:
 	 * rows from band buffer r2 to dst's rows r1 .. (.Lsdout). r0: bvb_dma_prepare's. */
 .Lsdin:
 	[--sp] = rets;
+	p1 = r0;			/* the slot, early: a P register moved from R waits 4 */
 	p0 = 1;
 	[sp + Q + F_X + DMAX_DST] = r2;
 	r2 = [sp + Q + F_P];
@@ -873,6 +878,7 @@ _bvb_sobel3x3_u8_asm:
 	jump .Lsd_go;
 .Lsdout:
 	[--sp] = rets;
+	p1 = r0;
 	p0 = 0;
 	[sp + Q + F_X + DMAX_SRC] = r2;
 	r2 = [sp + Q + F_P];
@@ -893,7 +899,6 @@ _bvb_sobel3x3_u8_asm:
 	r0 = p0;
 	r2 = r2 + r0;
 	p0 = sp;
-	p1 = r1;
 	p1 = p0 + (p1 << 2);		/* F_K0 or F_K1 */
 	r0 = [p1 + Q + F_K0];
 	[p1 + Q + F_K0] = r2;
