@@ -37,8 +37,8 @@
  * (--timing-report), against 114,319 with the ring at the start of the scratch (one
  * sub-bank; 439,001 cycles instead of 329,902). Bands: 2, 2, 4, 8 rows, then BVB_SOBEL3X3_BAND_ROWS (10 at width 320).
  * The core's work per band: wait for the job, re-address (bvb_dma_move) or prepare its two
- * transfers, start it (5 MMR writes), .Lseg's prologue and epilogue: about 430 cycles under the
- * model. The stream's per job: 10 SCLK to start, 4 descriptors of 7 halfwords, then 2 bytes per
+ * transfers, start it (5 MMR writes), .Lseg's prologue and epilogue: about 430 cycles (below).
+ * The stream's per job: 10 SCLK to start, 4 descriptors of 7 halfwords, then 2 bytes per
  * SCLK; in + out is 2 bytes a pixel, 4 core cycles at CCLK:SCLK = 4, the same as the compute:
  * neither has room for the other's overheads, so the two are balanced band by band.
  *
@@ -56,18 +56,19 @@
  *
  * Measured under the model (bfbench bench, --timing bf537, frames contiguous in SDRAM: strides
  * == width; the simulator's own count, --timing none, after it):
- *   sobel3x3_u8    160x120      90,417 cycles  4.71 per pixel (bound 3.88)   sim  83,185
- *     DMA path,    320x240     329,902         4.30           (bound 3.94)   sim 318,345
- *     scratch L1B  640x480   1,297,167         4.22           (bound 3.97)   sim 1,269,315
- *     (C -O2 from SDRAM: 1,768,035 / 7,123,962 / 28,567,030; 19.6x, 21.6x, 22.0x)
- *     Where the 320x240 cycles go, over the bound's 302,600 (interior pixels x 4): the loop's
- *     16 cycles per group on the border columns too (+2,000); pass 1, the lane masks and the
- *     plan (about 2,500); the core's work per band (27 bands x about 430: 11,600); waiting for
- *     the stream (11,500 modelled minus sim, with the MMR accesses): band 0 (2 rows) before
- *     pass 1 can start, bands 2 and 3 whose jobs carry more than 2 and 4 rows of compute
- *     cover, the last band's 4 rows against the 10 of the band before, and the last 5 output
- *     rows after the compute; 317 L1 collisions. At 160x120 the fill and the end weigh twice
- *     as much per pixel; at 640x480 half.
+ *   sobel3x3_u8    160x120      90,221 cycles  4.70 per pixel (bound 3.88)   sim    83,077
+ *     DMA path,    320x240     329,386         4.29           (bound 3.94)   sim   318,045
+ *     scratch L1B  640x480   1,294,771         4.21           (bound 3.97)   sim 1,267,887
+ *     (C -O2 from SDRAM: 1,768,035 / 7,123,962 / 28,567,030; 19.6x, 21.6x, 22.1x)
+ *     Where the 320x240 cycles go, over the bound's 302,600 (interior pixels x 4): the same
+ *     loop in place in L1 took 306,348 in the simulator's count (the 16 cycles per group on
+ *     the border columns too, pass 1, the lane masks, the zero rows); the DMA path's count,
+ *     318,045, adds 11,700 of core work for 27 bands (about 430 each: above) and the plan;
+ *     the model adds 11,300 more: the system MMR accesses at SCLK and the waits for the
+ *     stream: band 0 (2 rows) before pass 1 starts, bands 2 and 3, whose jobs carry more than
+ *     their compute covers, the last band (4 rows) against the 10 of the one before, and the
+ *     last 5 output rows after the compute; L1 collisions: 317. At 160x120 the fill and the
+ *     end weigh twice as much per pixel, at 640x480 half as much.
  *     Before the DMA path (frames read in place from SDRAM through the data cache, scratch in
  *     SDRAM): 224,114 / 833,597 / 3,395,439 (11.67 / 10.85 / 11.05 per pixel).
  *   sobel3x3_s16 (no DMA path yet: reads and writes the frames in place through the data

@@ -36,16 +36,20 @@
  * block before the DMA writes it, so that no stale or dirty line overwrites it later; frames
  * the camera's DMA put in SDRAM and output only DMA reads need neither.
  *
- * Cost (modelled: --timing bf537, SCLK = CCLK / 4, system MMR accesses 2 SCLK): prepare
- * 40-55 core cycles, start 5 MMR writes and its loop, about 55-65, wait one MMR read (8
- * cycles) per poll plus the loop; on the stream, 10 SCLK to start (the model's assumption),
- * 7 SCLK per descriptor fetched (2 per transfer), and then 1 SCLK per 16-bit element (per
- * byte with 8-bit elements): 2 bytes per SCLK, 0.5 byte per core cycle.
+ * Cost. On the stream (the model, --timing bf537, SCLK = CCLK / 4): 10 SCLK to start (the
+ * model's assumption), 7 SCLK per descriptor fetched (2 per transfer), then 1 SCLK per 16-bit
+ * element (per byte with 8-bit elements): 2 bytes per SCLK, 0.5 byte per core cycle. On the
+ * core, measured with dma_copy_u8 (bfbench run, a 2x2 frame in bands of 1 row, the difference
+ * of 2 and 4 jobs): a job of one transfer prepared, started and waited for, with the kernel's
+ * own bookkeeping, 390 cycles in the simulator's count, 530 modelled (its 6 system MMR
+ * accesses at 2 SCLK each, and the stream's 100 cycles for a 2-byte transfer); most of it is
+ * bvb_dma_prepare (the checks; sobel3x3_u8 saved some 200 cycles a transfer by moving
+ * prepared slots instead: 14 instructions). A kernel's per-band cost: firmware/asm/sobel.S.
  *
- * Calling from assembly: C ABI (arguments R0, R1, R2; result R0). They clobber only R0-R3,
- * P0-P2, ASTAT and the return address register's caller's RETS use (CALL): the I, M, B, L
- * registers and the loop registers are left as they were, so a kernel may keep its
- * circular buffers live across bands. They use no stack. */
+ * Calling from assembly: C ABI (arguments R0, R1, R2; result R0; called with CALL, so RETS is
+ * the caller's to save). They clobber only R0-R3, P0-P2 and ASTAT (bvb_dma_prepare saves
+ * what else it uses on the stack): the I, M, B, L registers and the loop registers are left
+ * as they were, so a kernel may keep its circular buffers live across bands. */
 #ifndef BVB_DMA_H
 #define BVB_DMA_H
 
