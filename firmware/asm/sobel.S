@@ -21,8 +21,9 @@
  * lane-mask words for u8, 24 bytes; H and B for s16, 16 bytes), walked by I2 (the row above)
  * and I3 (the row being made) as circular buffers; then, on the direct paths, one input line
  * (the last input row is read from a copy, so no load leaves src) and the output row buffers
- * of the row-by-row path; on the u8 kernel's DMA path the band buffers and a DMA job
- * (BVB_SOBEL3X3_SCRATCH_SIZE: 23.1 KB at widths 320 and 640, 19.4 KB at 160 -- L1 bank B).
+ * of the row-by-row path (BVB_SOBEL3X3_S16_SCRATCH_SIZE: 2.3 KB at width 160, 9 KB at 640);
+ * on the u8 kernel's DMA path also the band buffers and a DMA job (BVB_SOBEL3X3_SCRATCH_SIZE:
+ * 23.1 KB at widths 320 and 640, 19.4 KB at 160 -- L1 bank B).
  *
  * The DMA path (u8; frames in SDRAM, scratch in L1 data SRAM; .Ldplan and .Ldma_* after the
  * u8 entry). Input rows come into L1 in bands by memory DMA and output rows leave the same way
@@ -72,8 +73,8 @@
  *     Before the DMA path (frames read in place from SDRAM through the data cache, scratch in
  *     SDRAM): 224,114 / 833,597 / 3,395,439 (11.67 / 10.85 / 11.05 per pixel).
  *   sobel3x3_s16 (no DMA path yet: reads and writes the frames in place through the data
- *     cache) 160x120 863,798 (44.99 per pixel), 320x240 3,167,664 (41.25), 640x480
- *     14,218,111 (46.28); in L1, without the model: 87,422 / 347,146 / 1,384,986 (4.55 / 4.52
+ *     cache) 160x120 854,271 (44.49 per pixel), 320x240 3,148,637 (41.00), 640x480
+ *     14,196,937 (46.21); in L1, without the model: 87,422 / 347,146 / 1,384,986 (4.55 / 4.52
  *     / 4.51 per pixel with the magnitude), without mag 68,076 / 270,076 / 1,077,276.
  *   The inner loop is 16 (u8), 14 or 18 (s16) cycles per 4 pixels, run as one stream over the
  *   frame (u8 DMA path: over each band); the rest is the first row of blocks (9 cycles per 4
@@ -143,6 +144,8 @@
 #define F_K0    188	/* what job slots 0 and 1 were last prepared for: 2 rows + (1 in, 0 out) */
 #define F_K1    192
 #define LOCALS  200
+#define LOCALS16 112	/* the s16 kernel's frame: F_C .. F_DG only */
+#define ARGS16  (LOCALS16 + 36)
 #define ARGS    (LOCALS + 36)	/* [sp + ARGS + 12]: the 4th argument */
 
 	.section .l1.text, "ax"
@@ -926,26 +929,24 @@ _bvb_sobel3x3_s16_asm:
 	[--sp] = fp;
 	[--sp] = rets;
 	sp += -64;
-	sp += -64;
-	sp += -64;
-	sp += -8;			/* LOCALS */
+	sp += -48;			/* LOCALS16 */
 	[sp + F_SRC] = r0;
 	[sp + F_SS] = r1;
 	[sp + F_GX] = r2;
-	r3 = [sp + ARGS + 12];
+	r3 = [sp + ARGS16 + 12];
 	[sp + F_GY] = r3;
-	r3 = [sp + ARGS + 16];
+	r3 = [sp + ARGS16 + 16];
 	r3 <<= 1;
 	[sp + F_GS] = r3;
-	r3 = [sp + ARGS + 20];
+	r3 = [sp + ARGS16 + 20];
 	[sp + F_DST] = r3;		/* mag, or 0 */
-	r3 = [sp + ARGS + 24];
+	r3 = [sp + ARGS16 + 24];
 	[sp + F_DS] = r3;
-	r4 = [sp + ARGS + 28];		/* w */
+	r4 = [sp + ARGS16 + 28];		/* w */
 	[sp + F_W] = r4;
-	r5 = [sp + ARGS + 32];		/* h */
+	r5 = [sp + ARGS16 + 32];		/* h */
 	[sp + F_H] = r5;
-	r6 = [sp + ARGS + 36];		/* scratch */
+	r6 = [sp + ARGS16 + 36];		/* scratch */
 	[sp + F_SCR] = r6;
 	r0.l = 0xff;
 	r0.h = 0xff;
@@ -1496,10 +1497,8 @@ _bvb_sobel3x3_s16_asm:
 	l1 = r0;
 	l2 = r0;
 	l3 = r0;
-	sp += 60;
-	sp += 60;
-	sp += 60;
-	sp += 20;			/* LOCALS */
+	sp += 56;
+	sp += 56;			/* LOCALS16 */
 	rets = [sp++];
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];

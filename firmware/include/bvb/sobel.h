@@ -18,7 +18,8 @@
  *   dst / mag, *_stride   bytes from row to row; mag may be NULL (mag_stride is then unused).
  *   gx, gy, g_stride      int16 arrays (2-byte aligned) sharing g_stride, counted in elements.
  *   width, height         3 or more each. Strides >= width. Outputs overlap nothing.
- *   scratch               BVB_SOBEL3X3_SCRATCH_SIZE(width) bytes, 4-byte aligned, contents
+ *   scratch               BVB_SOBEL3X3_SCRATCH_SIZE(width) bytes for u8,
+ *                         BVB_SOBEL3X3_S16_SCRATCH_SIZE(width) for s16, 4-byte aligned, contents
  *                         ignored and clobbered; the C reference does not use it.
  * No other alignment is required of the frames or the strides. With frames in SDRAM and the
  * scratch in L1, the u8 assembly streams the frame through L1 by DMA at the same speed for
@@ -37,11 +38,11 @@
  *   subtractions per two pixels, and then ABS, MAX, MIN and BYTEPACK.
  *
  * Working set and memory
- *   Frames live in SDRAM, where the camera's DMA puts them. scratch (BVB_SOBEL3X3_SCRATCH_SIZE)
- *   holds two rows of box sums and horizontal pair sums (48 bytes per 4 pixels of width for u8,
- *   32 for s16) and, for the u8 kernel, the band buffers and a DMA job: 20.6 KB at width 320,
- *   19.4 KB at 160, 23.1 KB at 640. It belongs in L1 data SRAM: bank B has room for it (bank A
- *   keeps 16 KB beside its data cache).
+ *   Frames live in SDRAM, where the camera's DMA puts them. scratch holds two rows of box sums
+ *   and horizontal pair sums (48 bytes per 4 pixels of width for u8, 32 for s16) and, for the
+ *   u8 kernel (BVB_SOBEL3X3_SCRATCH_SIZE), the band buffers and a DMA job: 23.1 KB at widths
+ *   320 and 640, 19.4 KB at 160; s16 needs 2.3 KB at 160, 9 KB at 640. It belongs in L1 data
+ *   SRAM: bank B has room for the u8 kernel's (bank A keeps 16 KB beside its data cache).
  *   sobel3x3_u8, when src or dst is in SDRAM and scratch in L1 data SRAM, never reads or writes
  *   a frame through the core: input rows come into L1 in bands by memory DMA (bvb/dma.h) and
  *   output rows leave the same way, double-buffered. While the core computes band j+1 from one
@@ -71,10 +72,13 @@
    : BVB_SOBEL3X3_ROW_BYTES(width) <= 320 ? 10          \
    : BVB_SOBEL3X3_ROW_BYTES(width) <= 640 ? 4 : 2)
 
-/* Scratch bytes for a given width, for both kernels: the ring of box sums (48 bytes per 4
+/* Scratch bytes for sobel3x3_s16: the ring, one input line, the row buffers. */
+#define BVB_SOBEL3X3_S16_SCRATCH_SIZE(width) (56 * (((width) + 3) / 4) + 64)
+
+/* Scratch bytes for sobel3x3_u8: the ring of box sums (48 bytes per 4
  * pixels), up to 8 KB to put the boundary between its rows on a 4 KB sub-bank boundary and the
  * band buffers past its second sub-bank, the band buffers (2 x B input rows, 2 x (B + 1)
- * output rows) and the DMA job. 20.6 KB at width 320, 19.4 KB at 160, 23.1 KB at 640. */
+ * output rows) and the DMA job. 23.1 KB at widths 320 and 640, 19.4 KB at 160. */
 #define BVB_SOBEL3X3_SCRATCH_SIZE(width)                                         \
   (6 * BVB_SOBEL3X3_ROW_BYTES(width) + 8192 +                                    \
    (4 * BVB_SOBEL3X3_BAND_ROWS(width) + 2) * BVB_SOBEL3X3_ROW_BYTES(width) + 120)
