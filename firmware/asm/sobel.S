@@ -19,12 +19,29 @@
  *
  * Memory. scratch: a ring of two rows of blocks (one block per 4 pixels: H, 2B and the two
  * lane-mask words for u8, 24 bytes; H and B for s16, 16 bytes), walked by I2 (the row above)
- * and I3 (the row being made) as circular buffers, one input line (the last input row is read
- * from a copy, so no load leaves src) and the output row buffers of the row-by-row path.
- * 56 ceil(w/4) + 16 bytes: 2.3 KB at width 160, 9 KB at 640 -- it belongs in L1. Frames are
- * read once and written once, in row order (bvb/sobel.h: a three-row L1 ring filled by DMA on
- * the robot); the simulator counts the same cycles wherever they are, and the check places them
- * in L1 when they fit, in SDRAM otherwise.
+ * and I3 (the row being made) as circular buffers; then, on the direct paths, one input line
+ * (the last input row is read from a copy, so no load leaves src) and the output row buffers
+ * of the row-by-row path (BVB_SOBEL3X3_S16_SCRATCH_SIZE: 2.3 KB at width 160, 9 KB at 640);
+ * on the u8 kernel's DMA path also the band buffers and a DMA job (BVB_SOBEL3X3_SCRATCH_SIZE:
+ * 23.1 KB at widths 320 and 640, 19.4 KB at 160 -- L1 bank B).
+ *
+ * The DMA path (u8; frames in SDRAM, scratch in L1 data SRAM; .Ldplan and .Ldma_* after the
+ * u8 entry). Input rows come into L1 in bands by memory DMA and output rows leave the same way
+ * (bvb/dma.h, bvb/sobel.h), on one stream: the job started before the core computes band j+1
+ * sends band j's output rows and then brings band j+2 into the buffer band j has left. In L1
+ * the rows are P = 4 G bytes apart, so .Lseg runs each band as one stream of groups, the ring
+ * continuing from band to band. Layout, for the collision rule of the model (two accesses of
+ * one issue in one 4 KB sub-bank: +1 cycle): the ring's two rows on either side of a sub-bank
+ * boundary (I2 and I3 always in different sub-banks: they pair in 6 of the loop's 16 issues)
+ * and the band buffers from the sub-bank after the ring's second (the band loads pair with I2,
+ * the output store with I3): 317 collisions in the whole simulator run of a 320x240 call
+ * (--timing-report), against 114,319 with the ring at the start of the scratch (one
+ * sub-bank; 439,001 cycles instead of 329,902). Bands: 2, 2, 4, 8 rows, then BVB_SOBEL3X3_BAND_ROWS (10 at width 320).
+ * The core's work per band: wait for the job, re-address (bvb_dma_move) or prepare its two
+ * transfers, start it (5 MMR writes), .Lseg's prologue and epilogue: about 430 cycles (below).
+ * The stream's per job: 10 SCLK to start, 4 descriptors of 7 halfwords, then 2 bytes per
+ * SCLK; in + out is 2 bytes a pixel, 4 core cycles at CCLK:SCLK = 4, the same as the compute:
+ * neither has room for the other's overheads, so the two are balanced band by band.
  *
  * Lower bound (16 and 18 instructions per 4 pixels above, one 32-bit ALU/MAC instruction per
  * cycle): 4 cycles per interior pixel for u8, 4.5 for s16 with the magnitude. Memory does not
@@ -35,22 +52,36 @@
  * pixel for the 16-bit add, 0.25 for the byte pair sums); only the add/sub pairs of gx and gy
  * fit the quad instruction. (ADI's dual-MAC 3x3 convolution: 4.5 cycles per pixel for one
  * mask.) Without the magnitude, s16 needs 24 memory slots per group (12 cycles); its loop
- * takes 14 (8 data registers). The schedules assume the simulator's timing: load-use
- * latencies and L1 sub-bank conflicts (I2 and I3 load in the same cycle; on hardware the two
- * rows of the ring would go to different 4 KB sub-banks) are not modelled and not avoided.
+ * takes 14 (8 data registers). The loops load no address register they use at once; their
+ * L1 sub-bank collisions are avoided by placement on the u8 DMA path only (above).
  *
- * Measured (bfbench bench, frames contiguous: strides == width):
- *   sobel3x3_u8    160x120      76,588 cycles  3.99 per pixel  (C -O2: 1,946,028, 25.4x)
- *                  320x240     306,348         3.99            (C: 7,885,188, 25.7x)
- *                  640x480   1,226,668         3.99            (C: 31,744,308, 25.9x)
- *   sobel3x3_s16   160x120      87,422         4.55 with mag   (C: 2,045,839, 23.4x)
- *                  320x240     347,142         4.52            (C: 8,276,799, 23.8x)
- *                  640x480   1,384,982         4.51            (C: 33,295,519, 24.0x)
- *                  without mag: 68,076 / 270,076 / 1,077,276 (3.55 / 3.52 / 3.51 per pixel)
+ * Measured under the model (bfbench bench, --timing bf537, frames contiguous in SDRAM: strides
+ * == width; the simulator's own count, --timing none, after it):
+ *   sobel3x3_u8    160x120      90,221 cycles  4.70 per pixel (bound 3.88)   sim    83,077
+ *     DMA path,    320x240     329,386         4.29           (bound 3.94)   sim   318,045
+ *     scratch L1B  640x480   1,294,771         4.21           (bound 3.97)   sim 1,267,887
+ *     (C -O2 from SDRAM: 1,768,035 / 7,123,962 / 28,567,030; 19.6x, 21.6x, 22.1x)
+ *     Where the 320x240 cycles go, over the bound's 302,600 (interior pixels x 4): the same
+ *     loop in place in L1 took 306,348 in the simulator's count (the 16 cycles per group on
+ *     the border columns too, pass 1, the lane masks, the zero rows); the DMA path's count,
+ *     318,045, adds 11,700 of core work for 27 bands (about 430 each: above) and the plan;
+ *     the model adds 11,300 more: the system MMR accesses at SCLK and the waits for the
+ *     stream: band 0 (2 rows) before pass 1 starts, bands 2 and 3, whose jobs carry more than
+ *     their compute covers, the last band (4 rows) against the 10 of the one before, and the
+ *     last 5 output rows after the compute; L1 collisions: 317. At 160x120 the fill and the
+ *     end weigh twice as much per pixel, at 640x480 half as much.
+ *     Before the DMA path (frames read in place from SDRAM through the data cache, scratch in
+ *     SDRAM): 224,114 / 833,597 / 3,395,439 (11.67 / 10.85 / 11.05 per pixel).
+ *   sobel3x3_s16 (no DMA path yet: reads and writes the frames in place through the data
+ *     cache) 160x120 854,271 (44.49 per pixel), 320x240 3,148,637 (41.00), 640x480
+ *     14,196,937 (46.21); in L1, without the model: 87,422 / 347,146 / 1,384,986 (4.55 / 4.52
+ *     / 4.51 per pixel with the magnitude), without mag 68,076 / 270,076 / 1,077,276.
  *   The inner loop is 16 (u8), 14 or 18 (s16) cycles per 4 pixels, run as one stream over the
- *   frame; the rest is the first row of blocks (9 cycles per 4 pixels), the ring's lane masks,
- *   the zero rows and, for s16, the border columns (7 cycles a row).
- *   Other layouts (same method, measured with the bench's frames re-laid out):
+ *   frame (u8 DMA path: over each band); the rest is the first row of blocks (9 cycles per 4
+ *   pixels), the ring's lane masks, the zero rows and, for s16, the border columns (7 cycles a
+ *   row).
+ *   Other layouts, on the direct paths (simulator's counts, same method, the bench's frames
+ *   re-laid out; the DMA path runs every layout as the contiguous one):
  *   - rows padded, strides multiples of 4, outputs 4-byte aligned, width a multiple of 4: the
  *     loop runs on from row to row, only its pointers move (5-8 cycles a row): u8 at 160x120
  *     with 16 bytes of padding 77,279 (4.02 per pixel), s16 88,696 (4.62);
@@ -66,6 +97,8 @@
  * is what lets a single 16-cycle group keep both the x and the x-1 neighbours. */
 
 /* The stack frame both kernels share (the helpers below read it at [sp + F_*]). */
+#include "bvb/dma.h"
+
 #define F_C     0	/* 0x00FF00FF: the s16 loop's MIN constant, read at [SP] */
 #define F_SRC   4
 #define F_SS    8
@@ -93,7 +126,26 @@
 #define F_DIN   96	/* what the input, 8-bit output and int16 output pointers move */
 #define F_DOUT  100	/* from the end of a row of groups to the next row */
 #define F_DG    104
-#define LOCALS  112
+/* The DMA path of the u8 kernel (frames in SDRAM, scratch in L1): */
+#define F_IN0   112	/* the L1 band buffers of band j (input, output) and of band j+1 */
+#define F_IN1   116
+#define F_OUT0  120
+#define F_OUT1  124
+#define F_JOB   128	/* the DMA job, or 0 on the other paths */
+#define F_B     132	/* rows per band at most */
+#define F_P     136	/* band rows' stride: 4 G */
+#define F_OSRC  140	/* src and src_stride (F_SRC, F_SS then name band 0 in L1) */
+#define F_OSS   144
+#define F_S     148	/* band j: first input row, rows */
+#define F_N     152
+#define F_S1    156	/* band j+1 */
+#define F_N1    160
+#define F_X     164	/* a struct bvb_dma_xfer, 24 bytes */
+#define F_K0    188	/* what job slots 0 and 1 were last prepared for: 2 rows + (1 in, 0 out) */
+#define F_K1    192
+#define LOCALS  200
+#define LOCALS16 112	/* the s16 kernel's frame: F_C .. F_DG only */
+#define ARGS16  (LOCALS16 + 36)
 #define ARGS    (LOCALS + 36)	/* [sp + ARGS + 12]: the 4th argument */
 
 	.section .l1.text, "ax"
@@ -105,7 +157,9 @@ _bvb_sobel3x3_u8_asm:
 	[--sp] = fp;
 	[--sp] = rets;			/* the helpers below are called */
 	sp += -64;
-	sp += -48;			/* LOCALS */
+	sp += -64;
+	sp += -64;
+	sp += -8;			/* LOCALS */
 	[sp + F_SRC] = r0;
 	[sp + F_SS] = r1;
 	[sp + F_DST] = r2;
@@ -138,6 +192,26 @@ _bvb_sobel3x3_u8_asm:
 	r0 = r0 + r1;
 	r0 = r0 + r4;
 	[sp + F_END] = r0;		/* src + (h-1) ss + w */
+
+	/* Frames in SDRAM and the scratch in L1: the banded DMA path (.Ldma_* below). Band 0
+	 * (input rows 0 and 1) is on its way while the lane masks are made. */
+	call .Ldplan;
+	r0 = [sp + F_JOB];
+	cc = r0 == 0;
+	if cc jump .Lmasks;
+	r0 = 0;
+	r1 = 0;
+	r2 = [sp + F_IN0];
+	r3 = 2;
+	call .Lsdin;
+	r0 = [sp + F_JOB];
+	r1 = 1;
+	call _bvb_dma_start;
+.Lmasks:
+	r4 = [sp + F_W];
+	r5 = [sp + F_H];
+	r6 = [sp + F_SCR];		/* the scratch, or on the DMA path the ring */
+	r7 = [sp + F_G];
 
 	/* The lane masks of the ring blocks: 255 where the output is an interior pixel, 0 on
 	 * the ring (x = 0 and x >= w-1); MIN with them puts the left and right border zeros in
@@ -199,6 +273,9 @@ _bvb_sobel3x3_u8_asm:
 	r0 = r0 & r2;
 	[p0 + 16] = r0;
 
+	r0 = [sp + F_JOB];
+	cc = r0 == 0;
+	if !cc jump .Ldma_pre;
 	/* Rows 0 and h-1 are 0. */
 	p0 = [sp + F_DST];
 	p1 = r4;
@@ -213,6 +290,7 @@ _bvb_sobel3x3_u8_asm:
 	p1 = [sp + F_W];
 	call .Lzero;
 
+.Lpass1_go:
 	/* The first row of blocks, from input rows 0 and 1: H0 into the B slots, then
 	 * H1 into the H slots and 2 (H0 + H1) into the B slots. */
 	r0 = [sp + F_SRC];
@@ -301,6 +379,9 @@ _bvb_sobel3x3_u8_asm:
 	m0 = 8 (x);
 	m1 = -6 (x);
 	m2 = -4 (x);
+	r0 = [sp + F_JOB];
+	cc = r0 == 0;
+	if !cc jump .Ldma_bands;
 
 	/* One stream over the whole frame when rows are contiguous and dst rows aligned. */
 	r4 = [sp + F_W];
@@ -498,13 +579,348 @@ _bvb_sobel3x3_u8_asm:
 	l1 = r0;
 	l2 = r0;
 	l3 = r0;
-	sp += 56;
-	sp += 56;			/* LOCALS */
+	sp += 60;
+	sp += 60;
+	sp += 60;
+	sp += 20;			/* LOCALS */
 	rets = [sp++];
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;
 	.size _bvb_sobel3x3_u8_asm, . - _bvb_sobel3x3_u8_asm
+
+	/* The banded DMA path of the u8 kernel (bvb/sobel.h, "Working set and memory").
+	 *
+	 * .Ldplan: F_JOB = the job when src or dst is in SDRAM, the scratch in L1 data SRAM and
+	 * DMA reaches all three, else 0 (the direct paths above). It places in the scratch the
+	 * ring with the boundary between its two rows on a 4 KB sub-bank boundary (I2 and I3,
+	 * which load and store in the same cycles, then always work in different sub-banks), the
+	 * band buffers from the sub-bank after the ring's second (so that the band loads beside
+	 * I2 and the band stores beside I3 never share theirs): two input buffers of B rows, 8
+	 * bytes of over-read room, two output buffers of B + 1 rows (the last band's zero row),
+	 * then the job; F_SCR becomes the ring. Rows in L1 are P = 4 G bytes apart, so a band of
+	 * rows is one stream of groups for .Lseg whatever the frame's strides. */
+#define Q 4	/* the frame is 4 bytes further while a subroutine has RETS pushed */
+.Ldplan:
+	[--sp] = rets;
+	r0 = 0;
+	[sp + Q + F_JOB] = r0;
+	r0 = -1;
+	[sp + Q + F_K0] = r0;
+	[sp + Q + F_K1] = r0;
+	r2.l = 0;
+	r2.h = 0x0200;			/* the end of SDRAM */
+	r0 = [sp + Q + F_SRC];
+	r1 = [sp + Q + F_DST];
+	cc = r0 < r2 (iu);
+	if cc jump .Ldp_f;
+	cc = r1 < r2 (iu);
+	if !cc jump .Ldp_x;		/* both frames in L1 (or the window): read in place */
+.Ldp_f:
+	r7 = [sp + Q + F_G];
+	r6 = r7 << 2;			/* P */
+	[sp + Q + F_P] = r6;
+	r5 = 16;			/* B: BVB_SOBEL3X3_BAND_ROWS */
+	r0 = 160 (x);
+	r1 = 10;
+	cc = r0 < r6;
+	if cc r5 = r1;
+	r0 = 320 (x);
+	r1 = 4;
+	cc = r0 < r6;
+	if cc r5 = r1;
+	r0 = 640 (x);
+	r1 = 2;
+	cc = r0 < r6;
+	if cc r5 = r1;
+	[sp + Q + F_B] = r5;
+	r1 = r7 << 3;
+	r4 = r7 << 4;
+	r4 = r4 + r1;			/* 24 G: a row of the ring */
+	r0 = r5 << 2;
+	r0 += 2;
+	r0 *= r6;
+	r0 = r0 + r4;
+	r1 = 8192 + 120 (x);
+	r1 = r0 + r1;			/* BVB_SOBEL3X3_SCRATCH_SIZE */
+	r0 = [sp + Q + F_SCR];
+	r2.l = 0;
+	r2.h = 0xff80;
+	cc = r0 < r2 (iu);
+	if cc jump .Ldp_x;		/* scratch in SDRAM: nothing to gain */
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ldp_x;
+	r0 = [sp + Q + F_H];
+	r0 += -1;
+	r1 = [sp + Q + F_SS];
+	r0 *= r1;
+	r1 = [sp + Q + F_W];
+	r1 = r0 + r1;
+	r0 = [sp + Q + F_SRC];
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ldp_x;
+	r0 = [sp + Q + F_H];
+	r0 += -1;
+	r1 = [sp + Q + F_DS];
+	r0 *= r1;
+	r1 = [sp + Q + F_W];
+	r1 = r0 + r1;
+	r0 = [sp + Q + F_DST];
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ldp_x;
+	r0 = [sp + Q + F_SCR];
+	r0 = r0 + r4;
+	r1 = 4095 (x);
+	r0 = r0 + r1;
+	r1 = -4096 (x);
+	r0 = r0 & r1;			/* the boundary between the ring's rows */
+	r1 = r0 - r4;
+	[sp + Q + F_SCR] = r1;		/* the ring */
+	r1 = 4096 (x);
+	r0 = r0 + r1;
+	[sp + Q + F_IN0] = r0;
+	r1 = r5;
+	r1 *= r6;			/* B P */
+	r0 = r0 + r1;
+	[sp + Q + F_IN1] = r0;
+	r0 = r0 + r1;
+	r0 += 8;
+	[sp + Q + F_OUT0] = r0;
+	r0 = r0 + r1;
+	r0 = r0 + r6;
+	[sp + Q + F_OUT1] = r0;
+	r0 = r0 + r1;
+	r0 = r0 + r6;
+	[sp + Q + F_JOB] = r0;
+	r0 = [sp + Q + F_SRC];
+	[sp + Q + F_OSRC] = r0;
+	r0 = [sp + Q + F_SS];
+	[sp + Q + F_OSS] = r0;
+.Ldp_x:
+	rets = [sp++];
+	rts;
+
+	/* Band 0 (rows 0 and 1) has arrived when pass 1 starts on it in L1; band 1 comes in
+	 * meanwhile. Output row 0 (zero) goes out from slot 0 of band 0's output buffer. */
+.Ldma_pre:
+	p0 = [sp + F_OUT0];
+	r0 = 0;
+	p1 = [sp + F_G];
+	lsetup (.Ldz0, .Ldz0) lc0 = p1;
+.Ldz0:
+	[p0++] = r0;
+	call _bvb_dma_wait;
+	r0 = 0;
+	[sp + F_S] = r0;
+	r0 = 2;
+	[sp + F_N] = r0;
+	[sp + F_S1] = r0;
+	call .Lsdband;
+	[sp + F_N1] = r0;
+	r3 = r0;
+	r0 = 0;
+	r1 = 2;
+	r2 = [sp + F_IN1];
+	call .Lsdin;
+	r0 = [sp + F_JOB];
+	r1 = 1;
+	call _bvb_dma_start;
+	r0 = [sp + F_IN0];
+	[sp + F_SRC] = r0;
+	r0 = [sp + F_P];
+	[sp + F_SS] = r0;
+	r0 = -1;
+	[sp + F_END] = r0;		/* .Linrow: nothing to copy */
+	jump .Lpass1_go;
+
+	/* Band j (F_S, F_N rows, buffers F_IN0, F_OUT0) computed, band j+1 (F_S1, F_N1, F_IN1,
+	 * F_OUT1) in or arriving: wait for it, start the job that sends band j's output rows
+	 * out and brings band j+2 into band j's input buffer, compute band j+1, and so on. */
+.Ldma_bands:
+	r0 = [sp + F_IN0];
+	i0 = r0;			/* BYTEOP16P's byte offsets: rows in L1 are word aligned */
+	r0 += 1;
+	i1 = r0;
+.Ldb_loop:
+	r0 = [sp + F_S1];
+	r1 = [sp + F_H];
+	cc = r0 < r1;
+	if !cc jump .Ldb_last;
+	call _bvb_dma_wait;
+	r1 = [sp + F_S];		/* band j's output rows (.Ldoutrows) */
+	r3 = [sp + F_N];
+	r1 += -1;
+	cc = r1 < 0;
+	if !cc jump .Ldb_o (bp);
+	r1 = 0;
+	r3 = 1;
+.Ldb_o:
+	r0 = 0;
+	r2 = [sp + F_OUT0];
+	call .Lsdout;
+	r7 = 1;
+	r0 = [sp + F_S1];
+	r1 = [sp + F_N1];
+	r6 = r0 + r1;			/* band j+2 */
+	r1 = [sp + F_H];
+	cc = r6 < r1;
+	r5 = 0;
+	if !cc jump .Ldb_go;
+	r1 = [sp + F_B];		/* .Lsdband */
+	r1 = min (r6, r1);
+	r2 = 2;
+	r1 = max (r1, r2);
+	r2 = [sp + F_H];
+	r2 = r2 - r6;
+	r5 = min (r1, r2);
+	r3 = r5;
+	r0 = 1;
+	r1 = r6;
+	r2 = [sp + F_IN0];
+	call .Lsdin;
+	r7 = 2;
+.Ldb_go:
+	r0 = [sp + F_JOB];
+	r1 = r7;
+	call _bvb_dma_start;
+	/* band j+1 becomes band j */
+	r0 = [sp + F_S1];
+	[sp + F_S] = r0;
+	r0 = [sp + F_N1];
+	[sp + F_N] = r0;
+	[sp + F_S1] = r6;
+	[sp + F_N1] = r5;
+	r0 = [sp + F_IN0];
+	r1 = [sp + F_IN1];
+	[sp + F_IN0] = r1;
+	[sp + F_IN1] = r0;
+	r0 = [sp + F_OUT0];
+	r1 = [sp + F_OUT1];
+	[sp + F_OUT0] = r1;
+	[sp + F_OUT1] = r0;
+	p0 = [sp + F_IN0];
+	p1 = p0;
+	p2 = [sp + F_OUT0];
+	r0 = [sp + F_N];
+	r1 = [sp + F_G];
+	r0 *= r1;
+	r0 += -1;
+	p5 = r0;
+	call .Lseg;
+	jump .Ldb_loop;
+	/* The last band's output rows and the zero row h-1 after them. */
+.Ldb_last:
+	call _bvb_dma_wait;
+	call .Ldoutrows;
+	r0 = r3;
+	r1 = [sp + F_P];
+	r0 *= r1;
+	r1 = [sp + F_OUT0];
+	r0 = r0 + r1;
+	p0 = r0;
+	r0 = 0;
+	p1 = [sp + F_G];
+	lsetup (.Ldz1, .Ldz1) lc0 = p1;
+.Ldz1:
+	[p0++] = r0;
+	call .Ldoutrows;
+	r3 += 1;
+	r0 = 0;
+	r2 = [sp + F_OUT0];
+	call .Lsdout;
+	r0 = [sp + F_JOB];
+	r1 = 1;
+	call _bvb_dma_start;
+	call _bvb_dma_wait;
+	jump .Ldone;
+
+	/* Band j's output rows: r1 the first, r3 how many (band 0: row 0 alone; band j: rows
+	 * S-1 .. S+N-2). Clobbers R0. */
+.Ldoutrows:
+	r1 = [sp + F_S];
+	r3 = [sp + F_N];
+	r1 += -1;
+	cc = r1 < 0;
+	if !cc jump .Ldo_x (bp);
+	r1 = 0;
+	r3 = 1;
+.Ldo_x:
+	rts;
+
+	/* r0 = s: the rows of the band that starts at input row s: up to B, from 2 (rows 0 and 1,
+	 * pass 1) doubling (2, 2, 4, 8, ...), so that the compute starts soon. (Halving them
+	 * towards the end does not pay: each job then carries more than its band's compute
+	 * time covers.) Clobbers R1, R2. */
+.Lsdband:
+	r1 = [sp + F_B];
+	r1 = min (r0, r1);
+	r2 = 2;
+	r1 = max (r1, r2);
+	r2 = [sp + F_H];
+	r2 = r2 - r0;			/* rows left */
+	r0 = min (r1, r2);
+	rts;
+
+	/* Job slot r0: r3 input rows from row r1 into band buffer r2 (.Lsdin), or r3 output
+	 * rows from band buffer r2 to dst's rows r1 .. (.Lsdout). r0: bvb_dma_prepare's. */
+.Lsdin:
+	[--sp] = rets;
+	p1 = r0;			/* the slot, early: a P register moved from R waits 4 */
+	p0 = 1;
+	[sp + Q + F_X + DMAX_DST] = r2;
+	r2 = [sp + Q + F_P];
+	[sp + Q + F_X + DMAX_DS] = r2;
+	r2 = [sp + Q + F_OSS];
+	[sp + Q + F_X + DMAX_SS] = r2;
+	r1 *= r2;
+	r2 = [sp + Q + F_OSRC];
+	r1 = r1 + r2;
+	[sp + Q + F_X + DMAX_SRC] = r1;
+	jump .Lsd_go;
+.Lsdout:
+	[--sp] = rets;
+	p1 = r0;
+	p0 = 0;
+	[sp + Q + F_X + DMAX_SRC] = r2;
+	r2 = [sp + Q + F_P];
+	[sp + Q + F_X + DMAX_SS] = r2;
+	r2 = [sp + Q + F_DS];
+	[sp + Q + F_X + DMAX_DS] = r2;
+	r1 *= r2;
+	r2 = [sp + Q + F_DST];
+	r1 = r1 + r2;
+	[sp + Q + F_X + DMAX_DST] = r1;
+.Lsd_go:
+	[sp + Q + F_X + DMAX_ROWS] = r3;
+	r2 = [sp + Q + F_W];
+	[sp + Q + F_X + DMAX_W] = r2;
+	/* the slot's key, 2 rows + direction: the same as last time, only the addresses move */
+	r1 = r0;
+	r2 = r3 << 1;
+	r0 = p0;
+	r2 = r2 + r0;
+	p0 = sp;
+	p1 = p0 + (p1 << 2);		/* F_K0 or F_K1 */
+	r0 = [p1 + Q + F_K0];
+	[p1 + Q + F_K0] = r2;
+	cc = r0 == r2;
+	r0 = [sp + Q + F_JOB];
+	r2 = sp;
+	r3 = Q + F_X;
+	r2 = r2 + r3;
+	if cc jump .Lsd_move (bp);
+	call _bvb_dma_prepare;
+	rets = [sp++];
+	rts;
+.Lsd_move:
+	call _bvb_dma_move;
+	r0 = 0;
+	rets = [sp++];
+	rts;
+#undef Q
 
 	.global _bvb_sobel3x3_s16_asm
 	.type _bvb_sobel3x3_s16_asm, STT_FUNC
@@ -513,24 +929,24 @@ _bvb_sobel3x3_s16_asm:
 	[--sp] = fp;
 	[--sp] = rets;
 	sp += -64;
-	sp += -48;			/* LOCALS */
+	sp += -48;			/* LOCALS16 */
 	[sp + F_SRC] = r0;
 	[sp + F_SS] = r1;
 	[sp + F_GX] = r2;
-	r3 = [sp + ARGS + 12];
+	r3 = [sp + ARGS16 + 12];
 	[sp + F_GY] = r3;
-	r3 = [sp + ARGS + 16];
+	r3 = [sp + ARGS16 + 16];
 	r3 <<= 1;
 	[sp + F_GS] = r3;
-	r3 = [sp + ARGS + 20];
+	r3 = [sp + ARGS16 + 20];
 	[sp + F_DST] = r3;		/* mag, or 0 */
-	r3 = [sp + ARGS + 24];
+	r3 = [sp + ARGS16 + 24];
 	[sp + F_DS] = r3;
-	r4 = [sp + ARGS + 28];		/* w */
+	r4 = [sp + ARGS16 + 28];		/* w */
 	[sp + F_W] = r4;
-	r5 = [sp + ARGS + 32];		/* h */
+	r5 = [sp + ARGS16 + 32];		/* h */
 	[sp + F_H] = r5;
-	r6 = [sp + ARGS + 36];		/* scratch */
+	r6 = [sp + ARGS16 + 36];		/* scratch */
 	[sp + F_SCR] = r6;
 	r0.l = 0xff;
 	r0.h = 0xff;
@@ -1082,7 +1498,7 @@ _bvb_sobel3x3_s16_asm:
 	l2 = r0;
 	l3 = r0;
 	sp += 56;
-	sp += 56;			/* LOCALS */
+	sp += 56;			/* LOCALS16 */
 	rets = [sp++];
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];

@@ -2,6 +2,7 @@
  * the kernel through the checked-call trampoline, and writes the results back into the window. */
 #include <stdint.h>
 
+#include "bvb/dma.h"
 #include "bvb/mailbox.h"
 #include "registry.h"
 #include "runtime.h"
@@ -91,6 +92,9 @@ static void run_command(struct bvb_command *c, uint8_t *window, uint32_t window_
     call.args[i] = i >= c->nargs ? 0 : (c->argbuf >> i & 1) ? (uint32_t)(uintptr_t)addr[c->args[i]] : c->args[i];
   call.limit = c->cycle_limit ? c->cycle_limit : BVB_DEFAULT_CYCLE_LIMIT;
   uint32_t status = bvb_call(&call);
+  /* A kernel abandoned mid-transfer (fault, watchdog) may leave memory DMA running into the
+   * buffers copied back below or into the next call: stop it. */
+  bvb_dma_reset();
 
   for (uint32_t i = 0; i < c->nbufs; ++i) {
     const struct bvb_buffer *b = &c->bufs[i];

@@ -91,6 +91,7 @@ const SizeRule *bench_size_rule(const std::string &kernel) {
       {"pipe_seg_avoid", {1, 1, false}},
       {"pipe_flow_avoid", {1, 1, false}},
       {"pipe_odometry", {16, 16, true}},
+      {"dma_copy_u8", {1, 1, false}},
   };
   auto it = rules.find(kernel);
   return it == rules.end() ? nullptr : &it->second;

@@ -18,12 +18,16 @@
  *   dst / mag, *_stride   bytes from row to row; mag may be NULL (mag_stride is then unused).
  *   gx, gy, g_stride      int16 arrays (2-byte aligned) sharing g_stride, counted in elements.
  *   width, height         3 or more each. Strides >= width. Outputs overlap nothing.
- *   scratch               BVB_SOBEL3X3_SCRATCH_SIZE(width) bytes, 4-byte aligned, contents
+ *   scratch               BVB_SOBEL3X3_SCRATCH_SIZE(width) bytes for u8,
+ *                         BVB_SOBEL3X3_S16_SCRATCH_SIZE(width) for s16, 4-byte aligned, contents
  *                         ignored and clobbered; the C reference does not use it.
- * No other alignment is required of the frames or the strides. The assembly is fastest when the
- * frames are contiguous (every stride == width), width is a multiple of 4 (8 or more) and the
- * outputs are 4-byte aligned: it then runs over the frame as one stream. Other layouts go row
- * by row (see firmware/asm/sobel.S for what that costs).
+ * No other alignment is required of the frames or the strides. With frames in SDRAM and the
+ * scratch in L1, the u8 assembly streams the frame through L1 by DMA at the same speed for
+ * every layout (16-bit DMA elements when addresses, strides and width are even, bytes
+ * otherwise). Reading frames in place, the assembly is fastest when they are contiguous
+ * (every stride == width), width is a multiple of 4 (8 or more) and the outputs are 4-byte
+ * aligned: it then runs over the frame as one stream. Other layouts go row by row (see
+ * firmware/asm/sobel.S for what that costs).
  *
  * How the assembly computes it (bit-exact with the textbook form above)
  *   With the 2x2 box sum B(x, y) = p(x,y) + p(x+1,y) + p(x,y+1) + p(x+1,y+1):
@@ -34,21 +38,50 @@
  *   subtractions per two pixels, and then ABS, MAX, MIN and BYTEPACK.
  *
  * Working set and memory
- *   scratch holds two rows of box sums and horizontal pair sums (48 bytes per 4 pixels of width
- *   for u8, 32 for s16), one input row and the output row buffers: 2.3 KB at width 160, 9 KB at
- *   640; it belongs in L1. At 160x120 a frame (19 KB) fits L1 data memory; at 320x240 and
- *   640x480 frames live in SDRAM. The kernels read each input row once, in order, and write
- *   each output row once, so on the robot three input rows would circulate through an L1 ring
- *   filled by memory DMA (row y+2 arriving while row y+1 is processed), with output rows
- *   drained the same way; the simulator does not model SDRAM latency, so the kernels here
- *   read the frame in place. */
+ *   Frames live in SDRAM, where the camera's DMA puts them. scratch holds two rows of box sums
+ *   and horizontal pair sums (48 bytes per 4 pixels of width for u8, 32 for s16) and, for the
+ *   u8 kernel (BVB_SOBEL3X3_SCRATCH_SIZE), the band buffers and a DMA job: 23.1 KB at widths
+ *   320 and 640, 19.4 KB at 160; s16 needs 2.3 KB at 160, 9 KB at 640. It belongs in L1 data
+ *   SRAM: bank B has room for the u8 kernel's (bank A keeps 16 KB beside its data cache).
+ *   sobel3x3_u8, when src or dst is in SDRAM and scratch in L1 data SRAM, never reads or writes
+ *   a frame through the core: input rows come into L1 in bands by memory DMA (bvb/dma.h) and
+ *   output rows leave the same way, double-buffered. While the core computes band j+1 from one
+ *   input buffer into one output buffer, MDMA stream 0 sends band j's output rows to dst and
+ *   then brings band j+2 into the input buffer band j has left. Bands are up to
+ *   BVB_SOBEL3X3_BAND_ROWS(width) rows (8 at width 320, 16 at 160, 4 at 640): the first two
+ *   hold 2 rows (rows 0 and 1 start the box sums) and they double up to that, so the compute
+ *   starts after 2 rows have arrived; the last ones halve, so that little is left to send when
+ *   the compute ends. In L1 the rows are the width rounded up to 4 apart, whatever the frame's
+ *   strides, so every layout runs the same single stream of groups per band. The ring's two
+ *   rows sit on either side of a 4 KB sub-bank boundary and the band buffers in other
+ *   sub-banks, so the dual accesses of the inner loop never collide (firmware/asm/sobel.S).
+ *   Otherwise (both frames in L1, or scratch in SDRAM or the scratchpad, which DMA cannot
+ *   reach), and always for sobel3x3_s16, the kernels read each input row once, in order, and
+ *   write each output row once, in place. */
 #ifndef BVB_SOBEL_H
 #define BVB_SOBEL_H
 
 #include <stdint.h>
 
-/* Scratch bytes for a given width, for both kernels. */
-#define BVB_SOBEL3X3_SCRATCH_SIZE(width) (56 * (((width) + 3) / 4) + 64)
+/* Rows per band of the u8 kernel's DMA path, from the band rows' stride in L1 (the width
+ * rounded up to 4): as many as the scratch's 24 KB in L1 bank B allows for widths up to 640
+ * (each band costs some 300 cycles of set-up on the core). */
+#define BVB_SOBEL3X3_ROW_BYTES(width) (4 * (((width) + 3) / 4))
+#define BVB_SOBEL3X3_BAND_ROWS(width)                   \
+  (BVB_SOBEL3X3_ROW_BYTES(width) <= 160   ? 16          \
+   : BVB_SOBEL3X3_ROW_BYTES(width) <= 320 ? 10          \
+   : BVB_SOBEL3X3_ROW_BYTES(width) <= 640 ? 4 : 2)
+
+/* Scratch bytes for sobel3x3_s16: the ring, one input line, the row buffers. */
+#define BVB_SOBEL3X3_S16_SCRATCH_SIZE(width) (56 * (((width) + 3) / 4) + 64)
+
+/* Scratch bytes for sobel3x3_u8: the ring of box sums (48 bytes per 4
+ * pixels), up to 8 KB to put the boundary between its rows on a 4 KB sub-bank boundary and the
+ * band buffers past its second sub-bank, the band buffers (2 x B input rows, 2 x (B + 1)
+ * output rows) and the DMA job. 23.1 KB at widths 320 and 640, 19.4 KB at 160. */
+#define BVB_SOBEL3X3_SCRATCH_SIZE(width)                                         \
+  (6 * BVB_SOBEL3X3_ROW_BYTES(width) + 8192 +                                    \
+   (4 * BVB_SOBEL3X3_BAND_ROWS(width) + 2) * BVB_SOBEL3X3_ROW_BYTES(width) + 120)
 
 #ifdef __cplusplus
 extern "C" {
