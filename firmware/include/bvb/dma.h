@@ -5,8 +5,7 @@
  * short chain of transfers (for a kernel: the output band just computed, then the input band
  * after the one it computes next) run one after the other on one stream: the SRV-1's SDRAM is
  * one 16-bit bus, so transfers in and out share it on the chip whatever streams they use (the
- * simulator does not model contention between streams: two would run side by side there and
- * look faster than the chip could be).
+ * timing model charges two streams to or from SDRAM at once the sum of their times, as one).
  *
  * Transfers. Each is rows x width bytes from src (src_stride bytes from row to row) to dst
  * (dst_stride); strides may differ, so a band of a strided frame lands contiguous in L1 and
