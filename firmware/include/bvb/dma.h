@@ -16,8 +16,8 @@
  * row (1D) when the count fits 16 bits, else 2D with Y_MODIFY = stride - width + element.
  * It refuses (returns -1; the slot must then not be started) a transfer DMA cannot do: a
  * block not wholly in SDRAM (0 .. 32 MB) or L1 data SRAM (bank A's lower 16 KB, bank B), so
- * never the L1 scratchpad (0xFFB00000, no DMA path on the BF537; the simulator's DMA reaches
- * it, so only this check keeps a kernel off it) nor the window; a stride below the width; no
+ * never the L1 scratchpad (0xFFB00000, no DMA path on the BF537: the simulator ends such a
+ * transfer in DMA_ERR, as the chip does) nor the window; a stride below the width; no
  * rows or no width; counts or modifies beyond 16 bits. The caller then takes another path.
  *
  * Jobs. bvb_dma_start(job, n) runs slots 0 .. n-1 (n >= 1) in order: it sets each
