@@ -30,7 +30,9 @@
 #define BVB_HARRIS_H
 
 #define BVB_HARRIS_K4_Q15 5243
-#define BVB_HARRIS_SCRATCH_BYTES(width) (24 * ((width) + 16))
+/* The working rows (24 * (width + 16) bytes), then the assembly's DMA region: the job, a ring of
+ * four image rows and two output rows (12 * width + 188 bytes at most). */
+#define BVB_HARRIS_SCRATCH_BYTES(width) (36 * (width) + 640)
 
 /* CORNERS from a response map, in two kernels:
  * bvb_harris_nms, the candidates (C and assembly; the scan reads every pixel, which in C costs
