@@ -120,12 +120,13 @@ CheckCall odometry_call(const Image &grey, int stride, const bvb_pipe_frame &inf
   int ist = c.inout("state", std::move(state), View{4, true});
   int ir = c.out("result", sizeof(bvb_pipe_result), View{4, true});
   int ix = c.scratch("work", xbytes);
-  // The working rows that want L1 (the Harris scratch: 6.4 KB at 160, 12.8 KB at 320) in data
+  // The working rows that want L1 (the Harris scratch and at 160x120 the pyramid: 13 KB; 13.4 KB
+  // at 320x240 without it) in data
   // bank B, as the robot's build places them; everything else in SDRAM. The checks place
   // every buffer at random over this.
   const size_t fbytes = bvb_pipe_odometry_fast_bytes(w, h, stride, &p);
   int ifa = c.scratch("fast", fbytes);
-  if (fbytes <= 16 * 1024) c.bufs[size_t(ifa)].place = BVB_PLACE_L1B;
+  if (fbytes <= BVB_ODO_FAST_MAX) c.bufs[size_t(ifa)].place = BVB_PLACE_L1B;
   c.bufs[size_t(ist)].persistent = persistent;
   c.buf(ifr).word(w).word(h).word(stride).buf(iin).buf(ip).buf(ist).buf(ir).buf(ix).buf(ifa);
   c.host = [=](HostBuffers &m) {
