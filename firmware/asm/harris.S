@@ -16,15 +16,44 @@
  * Columns 0 and >= width-1 of the working rows are never cleaned: they only reach the border
  * outputs, which are written as 0 afterwards.
  *
- * Cycles (bfbench bench, simulator; frame, response and scratch in SDRAM): 274,911 at 160x120,
- * 1,049,751 at 320x240, 4,097,031 at 640x480 (14.3, 13.7, 13.3 per pixel; the C reference takes
- * 141-146 per pixel: 9.9x to 11.0x). Lower bound: per pixel, the gradients (0.5 BYTEOP16M and
- * 1 vector shift), 9 products on the dual MACs (4.5), three 3-column sums at 2 vector adds per
- * pair (3.0) and the response (hh, kh and three dual MACs per pair: 2.5): 11.5 issues per pixel;
- * every load and store fits a free slot (per pair: 6 + 3 + 3 + 3 loads, 3 + 3 + 2 stores in
- * 23 issues). The rest is the PACKs of the window sums (1.5 per pixel) and per-row set-up.
- * Working set: three image rows and 24 * NG + 144 bytes of scratch (3.9 KB at 160, 15.5 KB at
- * 640: L1 data, where it fits, on hardware; the simulator counts no memory latency). */
+ * The DMA path (frames in SDRAM, scratch in L1 data SRAM: .Lplan, .Ldstart, .Ldrow after the
+ * kernel). Image rows come into L1 by memory DMA (bvb/dma.h) into a ring of four row slots
+ * (slot r & 3 holds row r), and response rows leave from two L1 output rows: while the core
+ * makes output row y (gradient row y+1 from ring rows y .. y+2), one job on the stream sends
+ * output row y-1 and brings image row y+3 into the slot of row y-1. Job A brings rows 0..3
+ * before anything is computed; job B brings row 4 and writes the four zero border rows (from
+ * the zeroed output rows) while gradient row 2 is made. Per row the core waits, re-addresses
+ * the two transfers (bvb_dma_move; an odd src_stride prepares the input again: the rows
+ * alternate between byte and halfword moves) and starts the job: about 290 cycles in the
+ * simulator's count. On the stream per row: width bytes in and 4 width out, 2.5 width SCLK,
+ * 10 width core cycles at CCLK:SCLK = 4, under the 14 per pixel of compute. Otherwise (a
+ * frame in L1 both ways, scratch in SDRAM, or a transfer DMA refuses) the direct path reads
+ * and writes the frames in place.
+ *
+ * Lower bound: per pixel, the gradients (0.5 BYTEOP16M and 1 vector shift), 9 products on the
+ * dual MACs (4.5), three 3-column sums at 2 vector adds per pair (3.0) and the response (hh, kh
+ * and three dual MACs per pair: 2.5): 11.5 issues per pixel; every load and store fits a free
+ * slot (per pair: 6 + 3 + 3 + 3 loads, 3 + 3 + 2 stores in 23 issues).
+ *
+ * Measured (bfbench bench, frames in SDRAM, scratch in L1B; modelled cycles under --timing
+ * bf537, then the simulator's own count, --timing none):
+ *   160x120     365,330  19.03 per pixel (bound 11.5: 1.65x)   sim   308,916
+ *   320x240   1,243,212  16.19           (1.41x)                sim 1,116,796
+ *   640x480   4,427,685  14.41           (1.25x)                sim 4,230,156
+ *   (C -O2 from SDRAM: 3,008,323 / 12,238,890 / 49,397,594.) Before the DMA path (frames and
+ *   scratch read and written in place in SDRAM through the data cache): 793,108 modelled at
+ *   160x120 (41 per pixel; sim 274,911), the response's 4 bytes per pixel paying a line fill
+ *   and a write-back per 8 pixels.
+ *   Where the 160x120 cycles go over the bound's 220,800: the PACKs of the window sums (1.5
+ *   per pixel) and the per-row set-up of the four passes (sim 274,911 before the DMA path);
+ *   the DMA bookkeeping (about 290 cycles a row: sim 308,916); then under the model L1
+ *   sub-bank collisions, 41,108 cycles in the whole simulator run of the call
+ *   (--timing-report): the column sums load slot 0 in the issue that stores cxx or cxy, the
+ *   window sums load plane C in the issue that stores its W plane, the gradient loops load
+ *   two rows of one sub-bank (not yet placed apart); the fill (job A, 4 rows) and the last
+ *   row's transfer, which no compute covers. At 640x480 the per-row costs weigh a quarter.
+ * Working set: 24 * NG + 144 bytes of working rows, then the DMA region (job, four image rows,
+ * two response rows): BVB_HARRIS_SCRATCH_BYTES, 6.4 KB at 160, 23.7 KB at 640. */
 #include "bvb/dma.h"
 #include "bvb/harris.h"
 
