@@ -78,11 +78,11 @@ TEST(OdometryParams, OutOfRangeIsRejectedWithoutWriting) {
   EXPECT_GT(bvb_pipe_odometry_state_bytes(160, 120, 160, &p), 0u);
   p.lk_win = 8;  // even
   EXPECT_EQ(bvb_pipe_odometry_state_bytes(160, 120, 160, &p), 0u);
-  std::vector<uint8_t> frame(160 * 120), state(64, 0xAB), work(64);
+  std::vector<uint8_t> frame(160 * 120), state(64, 0xAB), work(64), fast(64);
   bvb_pipe_result result;
   std::memset(&result, 0x5A, sizeof result);
   const bvb_pipe_frame info{0, 0, 0, 0};
-  EXPECT_EQ(bvb_pipe_odometry_c(frame.data(), 160, 120, 160, &info, &p, state.data(), &result, work.data()), -1);
+  EXPECT_EQ(bvb_pipe_odometry_c(frame.data(), 160, 120, 160, &info, &p, state.data(), &result, work.data(), fast.data()), -1);
   for (uint8_t b : state) EXPECT_EQ(b, 0xAB);
   const uint8_t *r = reinterpret_cast<const uint8_t *>(&result);
   for (size_t i = 0; i < sizeof result; ++i) EXPECT_EQ(r[i], 0x5A);

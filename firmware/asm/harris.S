@@ -16,15 +16,45 @@
  * Columns 0 and >= width-1 of the working rows are never cleaned: they only reach the border
  * outputs, which are written as 0 afterwards.
  *
- * Cycles (bfbench bench, simulator; frame, response and scratch in SDRAM): 274,911 at 160x120,
- * 1,049,751 at 320x240, 4,097,031 at 640x480 (14.3, 13.7, 13.3 per pixel; the C reference takes
- * 141-146 per pixel: 9.9x to 11.0x). Lower bound: per pixel, the gradients (0.5 BYTEOP16M and
- * 1 vector shift), 9 products on the dual MACs (4.5), three 3-column sums at 2 vector adds per
- * pair (3.0) and the response (hh, kh and three dual MACs per pair: 2.5): 11.5 issues per pixel;
- * every load and store fits a free slot (per pair: 6 + 3 + 3 + 3 loads, 3 + 3 + 2 stores in
- * 23 issues). The rest is the PACKs of the window sums (1.5 per pixel) and per-row set-up.
- * Working set: three image rows and 24 * NG + 144 bytes of scratch (3.9 KB at 160, 15.5 KB at
- * 640: L1 data, where it fits, on hardware; the simulator counts no memory latency). */
+ * The DMA path (frames in SDRAM, scratch in L1 data SRAM: .Lplan, .Ldstart, .Ldrow after the
+ * kernel). Image rows come into L1 by memory DMA (bvb/dma.h) into a ring of four row slots
+ * (slot r & 3 holds row r), and response rows leave from two L1 output rows: while the core
+ * makes output row y (gradient row y+1 from ring rows y .. y+2), one job on the stream sends
+ * output row y-1 and brings image row y+3 into the slot of row y-1. Job A brings rows 0..3
+ * before anything is computed; job B brings row 4 and writes the four zero border rows (from
+ * the zeroed output rows) while gradient row 2 is made. Per row the core waits, re-addresses
+ * the two transfers (bvb_dma_move; an odd src_stride prepares the input again: the rows
+ * alternate between byte and halfword moves) and starts the job: about 290 cycles in the
+ * simulator's count. On the stream per row: width bytes in and 4 width out, 2.5 width SCLK,
+ * 10 width core cycles at CCLK:SCLK = 4, under the 14 per pixel of compute. Otherwise (a
+ * frame in L1 both ways, scratch in SDRAM, or a transfer DMA refuses) the direct path reads
+ * and writes the frames in place.
+ *
+ * Lower bound: per pixel, the gradients (0.5 BYTEOP16M and 1 vector shift), 9 products on the
+ * dual MACs (4.5), three 3-column sums at 2 vector adds per pair (3.0) and the response (hh, kh
+ * and three dual MACs per pair: 2.5): 11.5 issues per pixel; every load and store fits a free
+ * slot (per pair: 6 + 3 + 3 + 3 loads, 3 + 3 + 2 stores in 23 issues).
+ *
+ * Measured (bfbench bench, frames in SDRAM, scratch in L1B; modelled cycles under --timing
+ * bf537, then the simulator's own count, --timing none):
+ *   160x120     365,330  19.03 per pixel (bound 11.5: 1.65x)   sim   308,916
+ *   320x240   1,243,212  16.19           (1.41x)                sim 1,116,796
+ *   640x480   4,427,685  14.41           (1.25x)                sim 4,230,156
+ *   (C -O2 from SDRAM: 3,008,323 / 12,238,890 / 49,397,594.) Before the DMA path (frames and
+ *   scratch read and written in place in SDRAM through the data cache): 793,108 modelled at
+ *   160x120 (41 per pixel; sim 274,911), the response's 4 bytes per pixel paying a line fill
+ *   and a write-back per 8 pixels.
+ *   Where the 160x120 cycles go over the bound's 220,800: the PACKs of the window sums (1.5
+ *   per pixel) and the per-row set-up of the four passes (sim 274,911 before the DMA path);
+ *   the DMA bookkeeping (about 290 cycles a row: sim 308,916); then under the model L1
+ *   sub-bank collisions, 41,108 cycles in the whole simulator run of the call
+ *   (--timing-report): the column sums load slot 0 in the issue that stores cxx or cxy, the
+ *   window sums load plane C in the issue that stores its W plane, the gradient loops load
+ *   two rows of one sub-bank (not yet placed apart); the fill (job A, 4 rows) and the last
+ *   row's transfer, which no compute covers. At 640x480 the per-row costs weigh a quarter.
+ * Working set: 24 * NG + 144 bytes of working rows, then the DMA region (job, four image rows,
+ * two response rows): BVB_HARRIS_SCRATCH_BYTES, 6.4 KB at 160, 23.7 KB at 640. */
+#include "bvb/dma.h"
 #include "bvb/harris.h"
 
 	.section .l1.text, "ax"
@@ -47,7 +77,21 @@
 #define F_MID    -56   /* image row of the next gradient row */
 #define F_NEXT   -60   /* slot index (0..2) the next gradient row goes to */
 #define F_HALF   -64   /* 2-pair iterations of the window loop: ceil(npairs / 2) */
-#define F_SIZE   64
+/* The DMA path (frames in SDRAM, scratch in L1): F_JOB is 0 on the direct path. */
+#define F_JOB    -68   /* the DMA job (the DMA region's start) */
+#define F_RING   -72   /* the L1 ring of four image rows, slot r & 3 holds row r */
+#define F_P      -76   /* bytes between ring slots */
+#define F_OUTB   -80   /* two L1 output rows, 4 * width bytes apart */
+#define F_Y      -84   /* the output row being made */
+#define F_DDST   -88   /* dst's row y (in SDRAM) */
+#define F_NSRC   -92   /* src's row y + 3, the next one to bring */
+#define F_UPP    -96   /* the gradient row's image rows above and below (.Lgrad) */
+#define F_DNP    -100
+#define F_MIDP   -104  /* ... and the row itself */
+#define F_ODD    -108  /* src_stride odd: the input slot is prepared again for every row */
+#define F_XIN    -132  /* struct bvb_dma_xfer of the input row (24 bytes) */
+#define F_XOUT   -156  /* ... of the output row */
+#define F_SIZE   156
 
 	.global _bvb_harris_response_asm
 	.type _bvb_harris_response_asm, STT_FUNC
@@ -100,9 +144,16 @@ _bvb_harris_response_asm:
 	r0 = 0;
 	[fp + F_NEXT] = r0;
 
-	/* Rows 0 and 1 of the output are 0. */
-	p2 = r1;
 	[fp + F_DST] = r1;
+	call .Lplan;
+	r0 = [fp + F_JOB];
+	cc = r0 == 0;
+	if !cc jump .Ldstart;
+
+	/* Rows 0 and 1 of the output are 0. */
+	r1 = [fp + F_DST];
+.Ldirect:
+	p2 = r1;
 	call .Lzero_row;
 	r1 = [fp + F_DST];
 	r0 = [fp + F_DSTR];
@@ -114,7 +165,7 @@ _bvb_harris_response_asm:
 	r0 = [fp + F_SRC];
 	r1 = [fp + F_SSTR];
 	r0 = r0 + r1;
-	p0 = r0;
+	call .Lmid_direct;
 	r2 = [fp + F_SLOT0];
 	r3 = [fp + F_SLOTS];
 	r2 = r2 + r3;
@@ -124,7 +175,7 @@ _bvb_harris_response_asm:
 	r1 = [fp + F_SSTR];
 	r1 <<= 1;
 	r0 = r0 + r1;
-	p0 = r0;
+	call .Lmid_direct;
 	r2 = [fp + F_SLOT0];
 	r3 = [fp + F_SLOTS];
 	r3 <<= 1;
@@ -145,6 +196,12 @@ _bvb_harris_response_asm:
 	[fp + F_DST] = r0;
 
 .Lrow:
+	r0 = [fp + F_JOB];
+	cc = r0 == 0;
+	if !cc jump .Ldrow;
+	r0 = [fp + F_MID];
+	call .Lmid_direct;
+.Lrow_body:
 	/* 1. the gradients of the new row into the slot of the oldest */
 	r0 = [fp + F_NEXT];
 	r1 = [fp + F_SLOTS];
@@ -158,7 +215,6 @@ _bvb_harris_response_asm:
 	r2 = 0;
 	if cc r0 = r2;
 	[fp + F_NEXT] = r0;
-	p0 = [fp + F_MID];
 	call .Lgrad;
 	r0 = [fp + F_MID];
 	r1 = [fp + F_SSTR];
@@ -271,6 +327,9 @@ _bvb_harris_response_asm:
 	[p0 + -4] = r0;
 	[p0 + -8] = r0;
 
+	r0 = [fp + F_JOB];
+	cc = r0 == 0;
+	if !cc jump .Ldrow_end;
 	r0 = [fp + F_DST];
 	r1 = [fp + F_DSTR];
 	r0 = r0 + r1;
@@ -290,8 +349,388 @@ _bvb_harris_response_asm:
 	p2 = r0;
 	call .Lzero_row;
 
+.Lexit:
 	unlink;
 	(r7:4, p5:3) = [sp++];
+	rts;
+
+/* The DMA path. Output row y is made from image rows y-1 .. y+3 (gradient rows y-1 .. y+1):
+ * while the core makes it, one job sends output row y-1 from its L1 row to dst and brings image
+ * row y+3 into the ring slot of row y-1, which the gradient of row y+1 no longer needs. */
+.Ldstart:
+	p2 = [fp + F_OUTB];
+	call .Lzero_row;
+	call .Lzero_row;        /* both L1 output rows: the border rows' source */
+	/* job A: image rows 0 .. 3 into slots 0 .. 3 */
+	r0 = [fp + F_SRC];
+	[fp + F_XIN + DMAX_SRC] = r0;
+	r0 = [fp + F_SSTR];
+	[fp + F_XIN + DMAX_SS] = r0;
+	r0 = [fp + F_RING];
+	[fp + F_XIN + DMAX_DST] = r0;
+	r0 = [fp + F_P];
+	[fp + F_XIN + DMAX_DS] = r0;
+	r0 = [fp + F_W];
+	[fp + F_XIN + DMAX_W] = r0;
+	r0 = 4;
+	[fp + F_XIN + DMAX_ROWS] = r0;
+	r0 = [fp + F_JOB];
+	r1 = 0;
+	r2 = fp;
+	r3 = F_XIN (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	cc = r0 < 0;
+	if cc jump .Ld_refused;
+	r0 = [fp + F_JOB];
+	r1 = 1;
+	call _bvb_dma_start;
+	call _bvb_dma_wait;
+	/* gradient row 1 (slot 1) from ring rows 0 .. 2: row 0's slot is free for row 4 after it */
+	r0 = [fp + F_RING];
+	r1 = [fp + F_P];
+	[fp + F_UPP] = r0;
+	r0 = r0 + r1;
+	[fp + F_MIDP] = r0;
+	r0 = r0 + r1;
+	[fp + F_DNP] = r0;
+	r2 = [fp + F_SLOT0];
+	r3 = [fp + F_SLOTS];
+	r2 = r2 + r3;
+	p1 = r2;
+	call .Lgrad;
+	/* job B: image row 4 into slot 0; output rows 0, 1 and h-2, h-1 (zeros) */
+	r0 = [fp + F_SRC];
+	r1 = [fp + F_SSTR];
+	r1 <<= 2;
+	r0 = r0 + r1;
+	[fp + F_XIN + DMAX_SRC] = r0;
+	r0 = 1;
+	[fp + F_XIN + DMAX_ROWS] = r0;
+	r0 = [fp + F_JOB];
+	r1 = 0;
+	r2 = fp;
+	r3 = F_XIN (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	cc = r0 < 0;
+	if cc jump .Ld_refused;
+	r0 = [fp + F_OUTB];
+	[fp + F_XOUT + DMAX_SRC] = r0;
+	r0 = [fp + F_W];
+	r0 <<= 2;
+	[fp + F_XOUT + DMAX_SS] = r0;
+	[fp + F_XOUT + DMAX_W] = r0;
+	r0 = [fp + F_DST];
+	[fp + F_XOUT + DMAX_DST] = r0;
+	r0 = [fp + F_DSTR];
+	[fp + F_XOUT + DMAX_DS] = r0;
+	r0 = 2;
+	[fp + F_XOUT + DMAX_ROWS] = r0;
+	r0 = [fp + F_JOB];
+	r1 = 1;
+	r2 = fp;
+	r3 = F_XOUT (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	cc = r0 < 0;
+	if cc jump .Ld_refused;
+	r0 = [fp + F_ROWS];
+	r0 += 2;                /* h - 2 */
+	r1 = [fp + F_DSTR];
+	r0 *= r1;
+	r1 = [fp + F_DST];
+	r0 = r0 + r1;
+	[fp + F_XOUT + DMAX_DST] = r0;
+	r0 = [fp + F_JOB];
+	r1 = 2;
+	r2 = fp;
+	r3 = F_XOUT (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	cc = r0 < 0;
+	if cc jump .Ld_refused;
+	r0 = [fp + F_JOB];
+	r1 = 3;
+	call _bvb_dma_start;
+	/* gradient row 2 (slot 2) from ring rows 1 .. 3, while job B runs */
+	r0 = [fp + F_MIDP];
+	[fp + F_UPP] = r0;
+	r0 = [fp + F_DNP];
+	[fp + F_MIDP] = r0;
+	r1 = [fp + F_P];
+	r0 = r0 + r1;
+	[fp + F_DNP] = r0;
+	r2 = [fp + F_SLOT0];
+	r3 = [fp + F_SLOTS];
+	r3 <<= 1;
+	r2 = r2 + r3;
+	p1 = r2;
+	call .Lgrad;
+	/* output row 2 next; image row 5 the next to bring */
+	r0 = 2;
+	[fp + F_Y] = r0;
+	r0 = [fp + F_SSTR];
+	r1 = r0 << 2;
+	r0 = r0 + r1;
+	r1 = [fp + F_SRC];
+	r0 = r0 + r1;
+	[fp + F_NSRC] = r0;
+	r0 = [fp + F_DSTR];
+	r0 <<= 1;
+	r1 = [fp + F_DST];
+	r0 = r0 + r1;
+	[fp + F_DDST] = r0;
+	r0 = 1;
+	[fp + F_XOUT + DMAX_ROWS] = r0;
+	jump .Lrow;
+
+	/* DMA refused a transfer (a stride beyond its 16-bit modify, say): the direct path; what
+	 * reached L1 is not used. */
+.Ld_refused:
+	r0 = 0;
+	[fp + F_JOB] = r0;
+	r1 = [fp + F_DST];
+	jump .Ldirect;
+
+/* One output row's job and pointers (output row y = F_Y). */
+.Ldrow:
+	call _bvb_dma_wait;
+	/* image row y+3 (in the last row, h-1 again: there is no row h) into slot (y+3) & 3 */
+	r0 = [fp + F_NSRC];
+	r1 = [fp + F_SSTR];
+	r2 = r0 + r1;
+	[fp + F_NSRC] = r2;
+	r3 = r0 - r1;
+	r2 = [fp + F_ROWS];
+	cc = r2 == 1;
+	if cc r0 = r3;
+	[fp + F_XIN + DMAX_SRC] = r0;
+	r0 = [fp + F_Y];
+	r0 += 3;
+	r1 = 3;
+	r0 = r0 & r1;
+	r1 = [fp + F_P];
+	r0 *= r1;
+	r1 = [fp + F_RING];
+	r0 = r0 + r1;
+	[fp + F_XIN + DMAX_DST] = r0;
+	r3 = [fp + F_ODD];
+	cc = r3 == 0;
+	r0 = [fp + F_JOB];
+	r1 = 0;
+	r2 = fp;
+	r3 = F_XIN (x);
+	r2 = r2 + r3;
+	if cc jump .Ld_mvin (bp);
+	call _bvb_dma_prepare;  /* an odd stride: rows alternate between byte and halfword moves */
+	jump .Ld_out;
+.Ld_mvin:
+	call _bvb_dma_move;
+.Ld_out:
+	/* output row y-1, from y = 3 on */
+	r0 = [fp + F_Y];
+	r1 = 2;
+	cc = r0 == r1;
+	if cc jump .Ld_one;
+	r0 += -1;
+	r1 = 1;
+	r0 = r0 & r1;
+	r1 = [fp + F_W];
+	r1 <<= 2;
+	r0 *= r1;
+	r1 = [fp + F_OUTB];
+	r0 = r0 + r1;
+	[fp + F_XOUT + DMAX_SRC] = r0;
+	r0 = [fp + F_DDST];
+	r1 = [fp + F_DSTR];
+	r0 = r0 - r1;
+	[fp + F_XOUT + DMAX_DST] = r0;
+	r0 = [fp + F_JOB];
+	r1 = 1;
+	r2 = fp;
+	r3 = F_XOUT (x);
+	r2 = r2 + r3;
+	r3 = [fp + F_Y];
+	r3 += -3;
+	cc = r3 == 0;
+	if !cc jump .Ld_mvout (bp);
+	call _bvb_dma_prepare;  /* the first: slot 1 had job B's two border rows */
+	jump .Ld_two;
+.Ld_mvout:
+	call _bvb_dma_move;
+.Ld_two:
+	r0 = [fp + F_JOB];
+	r1 = 2;
+	call _bvb_dma_start;
+	jump .Ld_ptrs;
+.Ld_one:
+	r0 = [fp + F_JOB];
+	r1 = 1;
+	call _bvb_dma_start;
+.Ld_ptrs:
+	/* gradient row y+1 from ring rows y, y+1, y+2; the response into L1 output row y & 1 */
+	r3 = [fp + F_Y];
+	r2 = 3;
+	r1 = [fp + F_P];
+	r4 = [fp + F_RING];
+	r0 = r3 & r2;
+	r0 *= r1;
+	r0 = r0 + r4;
+	[fp + F_UPP] = r0;
+	r0 = r3;
+	r0 += 1;
+	r0 = r0 & r2;
+	r0 *= r1;
+	r0 = r0 + r4;
+	[fp + F_MIDP] = r0;
+	r0 = r3;
+	r0 += 2;
+	r0 = r0 & r2;
+	r0 *= r1;
+	r0 = r0 + r4;
+	[fp + F_DNP] = r0;
+	r0 = 1;
+	r0 = r3 & r0;
+	r1 = [fp + F_W];
+	r1 <<= 2;
+	r0 *= r1;
+	r1 = [fp + F_OUTB];
+	r0 = r0 + r1;
+	[fp + F_DST] = r0;
+	jump .Lrow_body;
+
+.Ldrow_end:
+	r0 = [fp + F_DDST];
+	r1 = [fp + F_DSTR];
+	r0 = r0 + r1;
+	[fp + F_DDST] = r0;
+	r0 = [fp + F_Y];
+	r0 += 1;
+	[fp + F_Y] = r0;
+	r0 = [fp + F_ROWS];
+	r0 += -1;
+	[fp + F_ROWS] = r0;
+	cc = r0 == 0;
+	if !cc jump .Lrow;
+	/* the last output row, h-3 (y - 1 now) */
+	call _bvb_dma_wait;
+	r0 = [fp + F_Y];
+	r0 += -1;
+	r1 = 1;
+	r0 = r0 & r1;
+	r1 = [fp + F_W];
+	r1 <<= 2;
+	r0 *= r1;
+	r1 = [fp + F_OUTB];
+	r0 = r0 + r1;
+	[fp + F_XOUT + DMAX_SRC] = r0;
+	r0 = [fp + F_DDST];
+	r1 = [fp + F_DSTR];
+	r0 = r0 - r1;
+	[fp + F_XOUT + DMAX_DST] = r0;
+	r0 = [fp + F_JOB];
+	r1 = 0;
+	r2 = fp;
+	r3 = F_XOUT (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	r0 = [fp + F_JOB];
+	r1 = 1;
+	call _bvb_dma_start;
+	call _bvb_dma_wait;
+	jump .Lexit;
+
+/* The direct path's image rows around row R0: F_MIDP, F_UPP, F_DNP. */
+.Lmid_direct:
+	[fp + F_MIDP] = r0;
+	r1 = [fp + F_SSTR];
+	r2 = r0 - r1;
+	[fp + F_UPP] = r2;
+	r2 = r0 + r1;
+	[fp + F_DNP] = r2;
+	rts;
+
+/* The DMA path's plan: F_JOB stays 0 (the direct path) unless the scratch is in L1 data SRAM,
+ * DMA reaches both frames and one of them is in SDRAM. The DMA region follows the working rows
+ * (24 * (width + 16) bytes in): the job, the ring of four image rows (P bytes apart, 8 bytes of
+ * pad before and after: the vector loads reach 3 bytes beyond a row), the two output rows. */
+.Lplan:
+	[--sp] = rets;
+	r0 = 0;
+	[fp + F_JOB] = r0;
+	r0 = [fp + F_SLOT0];
+	r0 += -8;               /* scratch */
+	r2.l = 0;
+	r2.h = 0xff80;
+	cc = r0 < r2 (iu);
+	if cc jump .Lp_x;       /* scratch in SDRAM: nothing to gain */
+	r1 = [fp + F_W];
+	r2 = 36;
+	r1 *= r2;
+	r2 = 640;
+	r1 = r1 + r2;           /* BVB_HARRIS_SCRATCH_BYTES */
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Lp_x;
+	r0 = [fp + F_ROWS];
+	r0 += 3;                /* h - 1 */
+	r1 = [fp + F_SSTR];
+	r0 *= r1;
+	r1 = [fp + F_W];
+	r1 = r0 + r1;
+	r0 = [fp + F_SRC];
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Lp_x;
+	r0 = [fp + F_ROWS];
+	r0 += 3;
+	r1 = [fp + F_DSTR];
+	r0 *= r1;
+	r1 = [fp + F_W];
+	r1 <<= 2;
+	r1 = r0 + r1;
+	r0 = [fp + F_DST];
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Lp_x;
+	r2.l = 0;
+	r2.h = 0xff80;
+	r0 = [fp + F_SRC];
+	r1 = [fp + F_DST];
+	cc = r0 < r2 (iu);
+	if cc jump .Lp_ok;      /* src in SDRAM */
+	cc = r1 < r2 (iu);
+	if !cc jump .Lp_x;      /* both in L1: nothing to gain */
+.Lp_ok:
+	r0 = [fp + F_W];
+	r1 = r0;
+	r1 += 16;
+	r2 = 24;
+	r1 *= r2;
+	r2 = [fp + F_SLOT0];
+	r2 += -8;
+	r1 = r1 + r2;
+	[fp + F_JOB] = r1;
+	r2 = BVB_DMA_JOB_BYTES + 8;
+	r1 = r1 + r2;
+	[fp + F_RING] = r1;
+	r2 = r0;
+	r2 += 7;
+	r3 = -8;
+	r2 = r2 & r3;
+	r2 += 8;
+	[fp + F_P] = r2;
+	r2 <<= 2;
+	r1 = r1 + r2;
+	r1 += 8;
+	[fp + F_OUTB] = r1;
+	r0 = [fp + F_SSTR];
+	r1 = 1;
+	r0 = r0 & r1;
+	[fp + F_ODD] = r0;
+.Lp_x:
+	rets = [sp++];
 	rts;
 
 /* Zero a dst row: P2 = row. */
@@ -302,14 +741,15 @@ _bvb_harris_response_asm:
 .Lz_s:	[p2++] = r0;
 	rts;
 
-/* The gradient row of image row P0 (1 <= yr <= h-2) into the slot at P1: per pixel pair the word
+/* The gradient row of image row F_MIDP (1 <= yr <= h-2; F_UPP, F_DNP the rows above and
+ * below) into the slot at P1: per pixel pair the word
  * (gx(x+1)|gx(x)) then (gy(x+1)|gy(x)), each x32. */
 .Lgrad:
-	r7 = [fp + F_SSTR];
+	p0 = [fp + F_MIDP];
 	r6 = [fp + F_N8];
 	r5 = p0;                /* mid */
-	r4 = r5 + r7;           /* dn */
-	r3 = r5 - r7;           /* up */
+	r4 = [fp + F_DNP];      /* dn */
+	r3 = [fp + F_UPP];      /* up */
 	cc = r6 == 0;
 	if cc jump .Lg_tail;
 	p3 = r6;
@@ -350,10 +790,9 @@ _bvb_harris_response_asm:
 	r6 = r6 << 5 (v) || [i2++m2] = r5;
 .Lgx_e:	r7 = r7 << 5 (v) || [i2++m2] = r6;
 	[i2++m2] = r7;
-	r7 = [fp + F_SSTR];
 	r5 = p0;
-	r4 = r5 + r7;
-	r3 = r5 - r7;
+	r4 = [fp + F_DNP];
+	r3 = [fp + F_UPP];
 .Lg_tail:
 	/* x from 8 n8 to width - 2: pairs, then perhaps one pixel. R5 mid, R4 dn, R3 up. */
 	r6 = [fp + F_N8];

@@ -138,7 +138,10 @@ struct odo_setup {
   uint32_t s_table, s_profile, s_frame, s_pyr, s_total;
   /* work offsets */
   uint32_t x_profile, x_bins, x_pscratch, x_result, x_curve, x_pyr, x_lkin, x_lkout, x_lkscr, x_points,
-      x_nres, x_nscr, x_map, x_pairs, x_d, x_e, x_sort, x_resp, x_hscr, x_nmsscr, x_cand, x_corners, x_total;
+      x_nres, x_nscr, x_map, x_pairs, x_d, x_e, x_sort, x_resp, x_cand, x_corners, x_total;
+  /* fast offsets */
+  uint32_t f_job, f_hscr, f_nmsscr, f_pyr, f_total;
+  int32_t pyr_fast;            /* this frame's pyramid in fast (f_pyr), else in work (x_pyr) */
 };
 
 static int32_t in_range(int32_t v, int32_t lo, int32_t hi) { return v >= lo && v <= hi; }
@@ -258,11 +261,19 @@ static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_par
   s->x_e = o, o += 4 * M;
   s->x_sort = o, o += 4 * M;
   s->x_resp = o, o += 4 * W * (uint32_t)s->hreg;
-  s->x_hscr = o, o += BVB_HARRIS_SCRATCH_BYTES(W);
-  s->x_nmsscr = o, o += BVB_HARRIS_NMS_SCRATCH_BYTES(W);
   s->x_cand = o, o += 8 * ((uint32_t)BVB_HARRIS_NMS_CAPACITY(w, s->hreg) + 1);
   s->x_corners = o, o += 12 * M;
   s->x_total = o;
+  o = 0;
+  s->f_job = o, o += BVB_ODO_COPY_JOB_BYTES;
+  s->f_hscr = o, o += ALIGN4(BVB_HARRIS_SCRATCH_BYTES(W));
+  s->f_nmsscr = o, o += ALIGN4(BVB_HARRIS_NMS_SCRATCH_BYTES(W));
+  /* The pyramid too while fast stays within 16 KB (160x120: 13 KB): the tracker reads it
+   * there, and its copy into the state leaves L1 by DMA. */
+  s->f_pyr = o;
+  s->pyr_fast = o + s->pyr_bytes <= BVB_ODO_FAST_MAX;
+  if (s->pyr_fast) o += s->pyr_bytes;
+  s->f_total = o;
   s->ok = 1;
 }
 
@@ -278,6 +289,13 @@ uint32_t bvb_pipe_odometry_work_bytes(int32_t width, int32_t height, int32_t str
   struct odo_setup s;
   setup(width, height, stride, p, &s);
   return s.ok ? s.x_total : 0;
+}
+
+uint32_t bvb_pipe_odometry_fast_bytes(int32_t width, int32_t height, int32_t stride,
+                                      const struct bvb_odo_params *p) {
+  struct odo_setup s;
+  setup(width, height, stride, p, &s);
+  return s.ok ? s.f_total : 0;
 }
 
 int32_t bvb_pipe_odometry_floor_y0(int32_t width, int32_t height, int32_t stride, const struct bvb_odo_params *p) {
@@ -480,6 +498,15 @@ static void copy_words(uint8_t *dst, const uint8_t *src, uint32_t n) {
   }
 }
 
+static void copy_both(void *job, uint8_t *dst, const uint8_t *src, uint32_t n, uint8_t *dst2, const uint8_t *src2,
+                      uint32_t n2) {
+  (void)job;
+  copy_words(dst, src, n);
+  copy_words(dst2, src2, n2);
+}
+
+static void copy_none(void) {}
+
 /* What one frame computes before it is committed to the state. */
 struct odo_frame {
   int32_t shift, t, dth_vis, dth_enc, dth, motion, flags;
@@ -578,14 +605,14 @@ static void rotation(const struct bvb_odo_kernels *ops, const struct bvb_odo_par
 int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *frame, int32_t width,
                               int32_t height, int32_t stride, const struct bvb_pipe_frame *info,
                               const struct bvb_odo_params *p, uint8_t *state, struct bvb_pipe_result *out,
-                              void *work) {
+                              void *work, void *fast) {
   struct odo_setup s;
   setup(width, height, stride, p, &s);
   if (!s.ok) return -1;
   struct odo_state *st = (struct odo_state *)state;
-  uint8_t *x = (uint8_t *)work;
+  uint8_t *x = (uint8_t *)work, *fx = (uint8_t *)fast;
   uint8_t *key = state + s.s_profile, *prev = state + s.s_frame, *prev_pyr = state + s.s_pyr;
-  uint8_t *profile = x + s.x_profile, *pyr = x + s.x_pyr;
+  uint8_t *profile = x + s.x_profile, *pyr = s.pyr_fast ? fx + s.f_pyr : x + s.x_pyr;
   int32_t *table = (int32_t *)(state + s.s_table);
   int32_t *corners = (int32_t *)(x + s.x_corners);
   uint8_t *cur = p->rot_bins ? x + s.x_bins : profile + p->win_x0;
@@ -620,11 +647,15 @@ int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *
   if (!first) estimate(p, &s, st, x, &f);
   if (++k >= stages) goto done;
   /* 6, 7: Harris corners of the floor region, for the next frame */
-  ops->harris_response(frame + s.floor_y0 * stride, (int32_t *)(x + s.x_resp), w, s.hreg, stride, w, x + s.x_hscr);
+  ops->harris_response(frame + s.floor_y0 * stride, (int32_t *)(x + s.x_resp), w, s.hreg, stride, w, fx + s.f_hscr);
   if (++k >= stages) goto done;
+  /* A full run copies this frame and its pyramid into the state now (the tracker, the last to
+   * read the previous ones, is done), the copy overlapping the NMS and the selection. */
+  const int32_t early = stages >= BVB_ODO_STAGES && stride % 4 == 0;
+  if (early) ops->copy(fx + s.f_job, prev, frame, (uint32_t)(stride * h), prev_pyr, pyr, lk ? s.pyr_bytes : 0);
   {
     int32_t *cand = (int32_t *)(x + s.x_cand), count = 0;
-    ops->harris_nms((int32_t *)(x + s.x_resp), w, s.hreg, w, p->harris_threshold, cand, &count, x + s.x_nmsscr);
+    ops->harris_nms((int32_t *)(x + s.x_resp), w, s.hreg, w, p->harris_threshold, cand, &count, fx + s.f_nmsscr);
     f.ncorners = bvb_harris_select_c(cand, count, p->max_features, p->min_distance, corners);
   }
   if (++k >= stages) goto done;
@@ -671,11 +702,12 @@ int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *
     st->feat[2 * i + 1] = (corners[3 * i + 1] + s.floor_y0) * Q16;
   }
   st->nfeat = f.ncorners;
-  if (stride % 4 == 0)
-    copy_words(prev, frame, (uint32_t)(stride * h));
-  else
+  if (early) {
+    ops->copy_wait();
+  } else {
     for (int32_t r = 0; r < h; ++r) copy_bytes(prev + r * stride, frame + r * stride, (uint32_t)w);
-  if (lk) copy_words(prev_pyr, pyr, s.pyr_bytes);
+    if (lk) copy_words(prev_pyr, pyr, s.pyr_bytes);
+  }
   ++k;
 
 done:
@@ -697,10 +729,11 @@ done:
 
 static const struct bvb_odo_kernels c_kernels = {
     bvb_scanline_profile_u8_c, bvb_scanline_shift_u8_c, bvb_harris_response_c, bvb_harris_nms_c,
-    bvb_lk_pyramid_c,          bvb_lk_track_c,          bvb_ncc_match_c,       bvb_ncc_scoremap_c};
+    bvb_lk_pyramid_c,          bvb_lk_track_c,          bvb_ncc_match_c,       bvb_ncc_scoremap_c,
+    copy_both, copy_none};
 
 int32_t bvb_pipe_odometry_c(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,
                             const struct bvb_pipe_frame *info, const struct bvb_odo_params *p, uint8_t *state,
-                            struct bvb_pipe_result *out, void *work) {
-  return bvb_pipe_odometry_run(&c_kernels, frame, width, height, stride, info, p, state, out, work);
+                            struct bvb_pipe_result *out, void *work, void *fast) {
+  return bvb_pipe_odometry_run(&c_kernels, frame, width, height, stride, info, p, state, out, work, fast);
 }

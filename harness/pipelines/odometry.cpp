@@ -120,11 +120,18 @@ CheckCall odometry_call(const Image &grey, int stride, const bvb_pipe_frame &inf
   int ist = c.inout("state", std::move(state), View{4, true});
   int ir = c.out("result", sizeof(bvb_pipe_result), View{4, true});
   int ix = c.scratch("work", xbytes);
+  // The working rows that want L1 (the Harris scratch and at 160x120 the pyramid: 13 KB; 13.4 KB
+  // at 320x240 without it) in data
+  // bank B, as the robot's build places them; everything else in SDRAM. The checks place
+  // every buffer at random over this.
+  const size_t fbytes = bvb_pipe_odometry_fast_bytes(w, h, stride, &p);
+  int ifa = c.scratch("fast", fbytes);
+  if (fbytes <= BVB_ODO_FAST_MAX) c.bufs[size_t(ifa)].place = BVB_PLACE_L1B;
   c.bufs[size_t(ist)].persistent = persistent;
-  c.buf(ifr).word(w).word(h).word(stride).buf(iin).buf(ip).buf(ist).buf(ir).buf(ix);
+  c.buf(ifr).word(w).word(h).word(stride).buf(iin).buf(ip).buf(ist).buf(ir).buf(ix).buf(ifa);
   c.host = [=](HostBuffers &m) {
     m.set_ret(bvb_pipe_odometry_c(m.u8(ifr), w, h, stride, m.as<bvb_pipe_frame>(iin), m.as<bvb_odo_params>(ip),
-                                  m.u8(ist), m.as<bvb_pipe_result>(ir), m.u8(ix)));
+                                  m.u8(ist), m.as<bvb_pipe_result>(ir), m.u8(ix), m.u8(ifa)));
   };
   return c;
 }

@@ -24,13 +24,19 @@
  * rows. width, height >= 5; src_stride >= width, dst_stride >= width; no alignment required of src,
  * dst 4-byte aligned. scratch: BVB_HARRIS_SCRATCH_BYTES(width) bytes, 4-byte aligned, any
  * contents (working rows; the assembly keeps them there, the C reference uses part of it).
+ * Frames in SDRAM, scratch in L1 data SRAM (where the robot runs it): the assembly brings the
+ * image rows into L1 and sends the response rows out by memory DMA (bvb/dma.h, one job per
+ * output row on MDMA stream 0; firmware/asm/harris.S), the same results; elsewhere it reads
+ * and writes the frames in place.
  * The assembly reads the frame by aligned words: bytes of the 4-byte words that hold the rows'
  * pixels, so up to 3 bytes either side of a row, never further. */
 #ifndef BVB_HARRIS_H
 #define BVB_HARRIS_H
 
 #define BVB_HARRIS_K4_Q15 5243
-#define BVB_HARRIS_SCRATCH_BYTES(width) (24 * ((width) + 16))
+/* The working rows (24 * (width + 16) bytes), then the assembly's DMA region: the job, a ring of
+ * four image rows and two output rows (12 * width + 188 bytes at most). */
+#define BVB_HARRIS_SCRATCH_BYTES(width) (36 * (width) + 640)
 
 /* CORNERS from a response map, in two kernels:
  * bvb_harris_nms, the candidates (C and assembly; the scan reads every pixel, which in C costs

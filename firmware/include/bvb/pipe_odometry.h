@@ -117,7 +117,12 @@
  *   alone between calls (frame 0 initialises it; its contents before do not matter). out: the
  *   pose (has_pose = 1, x_q16, y_q16 in inches, heading_q16 in degrees, counter-clockwise, not
  *   wrapped), decision BVB_PIPE_STOP (this pipeline steers nothing), diag BVB_ODO_DIAG_*.
- *   work: bvb_pipe_odometry_work_bytes() bytes, 4-byte aligned, any contents. Returns
+ *   work: bvb_pipe_odometry_work_bytes() bytes, 4-byte aligned, any contents (SDRAM: the
+ *   response map alone is 4 bytes per pixel of the floor region). fast:
+ *   bvb_pipe_odometry_fast_bytes() bytes, 4-byte aligned, any contents: the working rows that
+ *   want L1 data SRAM (the Harris response's and the NMS's scratch: there the assembly
+ *   response streams the frame through L1 by DMA, bvb/harris.h; and this frame's LK pyramid
+ *   while the whole stays within BVB_ODO_FAST_MAX bytes). Returns
  *   BVB_PIPE_STOP, or -1 when the parameters are out of range (nothing written).
  *   Limits (else -1): 16 <= width, height <= 1024, width <= stride <= 4096; 1 <= fx, fy <= 1024
  *   px; cam_height 1/16..64 in; tilt -45..45 deg; 1 <= band_rows <= 256 inside the frame; the
@@ -199,6 +204,9 @@ struct bvb_odo_params {
 };
 
 /* The kernels one build calls. */
+/* fast holds the LK pyramid as well while it stays within this (L1 data bank B has 24 KB). */
+#define BVB_ODO_FAST_MAX 16384u
+
 struct bvb_odo_kernels {
   void (*profile)(const uint8_t *src, int32_t width, int32_t rows, int32_t stride, uint8_t *profile,
                   void *scratch);
@@ -219,7 +227,15 @@ struct bvb_odo_kernels {
   void (*ncc_scoremap)(const uint8_t *frame1, const uint8_t *frame2, int32_t stride, int32_t width,
                        int32_t height, int32_t x, int32_t y, int32_t radius, int32_t search,
                        int16_t *map, void *scratch);
+  /* The state update's copies of the frame and its pyramid: n bytes from src to dst and n2
+   * from src2 to dst2 (4-byte aligned, multiples of 4; n2 may be 0), done when copy_wait
+   * returns. The C build copies at once; the assembly build's starts a memory DMA job (its
+   * descriptors in job, BVB_ODO_COPY_JOB_BYTES) that runs while the core goes on. */
+  void (*copy)(void *job, uint8_t *dst, const uint8_t *src, uint32_t n, uint8_t *dst2, const uint8_t *src2,
+               uint32_t n2);
+  void (*copy_wait)(void);
 };
+#define BVB_ODO_COPY_JOB_BYTES 112
 
 #ifdef __cplusplus
 extern "C" {
@@ -230,6 +246,8 @@ uint32_t bvb_pipe_odometry_state_bytes(int32_t width, int32_t height, int32_t st
                                        const struct bvb_odo_params *p);
 uint32_t bvb_pipe_odometry_work_bytes(int32_t width, int32_t height, int32_t stride,
                                       const struct bvb_odo_params *p);
+uint32_t bvb_pipe_odometry_fast_bytes(int32_t width, int32_t height, int32_t stride,
+                                      const struct bvb_odo_params *p);
 /* The first image row of the feature region (floor nearer than max_range), as the pipeline
  * computes it; -1 when the parameters are out of range. */
 int32_t bvb_pipe_odometry_floor_y0(int32_t width, int32_t height, int32_t stride, const struct bvb_odo_params *p);
@@ -237,13 +255,13 @@ int32_t bvb_pipe_odometry_floor_y0(int32_t width, int32_t height, int32_t stride
 int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *k, const uint8_t *frame, int32_t width,
                               int32_t height, int32_t stride, const struct bvb_pipe_frame *info,
                               const struct bvb_odo_params *p, uint8_t *state, struct bvb_pipe_result *out,
-                              void *work);
+                              void *work, void *fast);
 int32_t bvb_pipe_odometry_c(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,
                             const struct bvb_pipe_frame *info, const struct bvb_odo_params *p, uint8_t *state,
-                            struct bvb_pipe_result *out, void *work);
+                            struct bvb_pipe_result *out, void *work, void *fast);
 int32_t bvb_pipe_odometry_asm(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,
                               const struct bvb_pipe_frame *info, const struct bvb_odo_params *p,
-                              uint8_t *state, struct bvb_pipe_result *out, void *work);
+                              uint8_t *state, struct bvb_pipe_result *out, void *work, void *fast);
 
 /* The fixed-point trigonometry, exported for the host tests. */
 void bvb_odo_sincos(int32_t angle_q16deg, int32_t *cos_q30, int32_t *sin_q30);
