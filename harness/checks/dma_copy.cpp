@@ -49,7 +49,8 @@ void check(Checker &ck) {
       const int ds = packed ? s.w : pick_stride(s.w, rng);
       const uint32_t ks = rng.uniform(0, 1) ? 0u : uint32_t(rng.uniform(1, 3));
       const uint32_t kd = rng.uniform(0, 1) ? 0u : uint32_t(rng.uniform(1, 3));
-      const Pattern p = all_patterns()[rng.uniform(0, int(all_patterns().size()) - 1)];
+      const std::vector<Pattern> &pats = ck.patterns();  // real frames only when present
+      const Pattern p = pats[rng.uniform(0, int(pats.size()) - 1)];
       std::vector<uint8_t> src = make_plane(p, s.w, s.h, ss, rng, ck.options().frames_real);
       // Where the kernels run: frames in SDRAM, band buffers in L1 bank A or B (when they fit).
       const size_t need = BVB_DMA_COPY_SCRATCH_SIZE(s.w, band) + 256;
