@@ -72,8 +72,20 @@
    : BVB_SOBEL3X3_ROW_BYTES(width) <= 320 ? 10          \
    : BVB_SOBEL3X3_ROW_BYTES(width) <= 640 ? 4 : 2)
 
-/* Scratch bytes for sobel3x3_s16: the ring, one input line, the row buffers. */
-#define BVB_SOBEL3X3_S16_SCRATCH_SIZE(width) (56 * (((width) + 3) / 4) + 64)
+/* Rows per band of the s16 kernel's DMA path: 8 at widths up to 160, 4 up to 320, else 2, so
+ * that its scratch stays within L1 bank B's 24 KB up to width 640 (the bus, not the per-band
+ * set-up, sets that path's pace: firmware/asm/sobel.S). */
+#define BVB_SOBEL3X3_S16_BAND_ROWS(width)               \
+  (BVB_SOBEL3X3_ROW_BYTES(width) <= 160   ? 8           \
+   : BVB_SOBEL3X3_ROW_BYTES(width) <= 320 ? 4 : 2)
+
+/* Scratch bytes for sobel3x3_s16: the ring (8 row strides P, the width rounded up to 4), the
+ * band buffers (2 x B input rows, 2 x B rows each of gx and gy at 2 P and of mag at P), 8
+ * bytes of over-read room and the DMA job; the direct paths use the first 56 bytes per 4
+ * pixels of it (the ring, one input line, the row buffers). 16.4 KB at width 160, 17.6 KB at
+ * 320, 20.1 KB at 640. */
+#define BVB_SOBEL3X3_S16_SCRATCH_SIZE(width)                                        \
+  ((8 + 12 * BVB_SOBEL3X3_S16_BAND_ROWS(width)) * BVB_SOBEL3X3_ROW_BYTES(width) + 120)
 
 /* Scratch bytes for sobel3x3_u8: the ring of box sums (48 bytes per 4
  * pixels), up to 8 KB to put the boundary between its rows on a 4 KB sub-bank boundary and the
