@@ -156,7 +156,9 @@
 #define R_W     12
 #define R_OFF   16
 #define F_NI    300	/* output transfers per band: 3 with mag, else 2 */
-#define LOCALS16 304	/* the s16 kernel's frame */
+#define F_JOB2  304	/* the other job, and its slots' keys (.Ls16_swj) */
+#define F_K4    308
+#define LOCALS16 324	/* the s16 kernel's frame */
 #define ARGS16  (LOCALS16 + 36)
 #define ARGS    (LOCALS + 36)	/* [sp + ARGS + 12]: the 4th argument */
 
@@ -954,6 +956,10 @@ _bvb_sobel3x3_u8_asm:
 	[sp + Q + F_K1] = r0;
 	[sp + Q + F_K2] = r0;
 	[sp + Q + F_K3] = r0;
+	[sp + Q + F_K4] = r0;
+	[sp + Q + F_K4 + 4] = r0;
+	[sp + Q + F_K4 + 8] = r0;
+	[sp + Q + F_K4 + 12] = r0;
 	r2.l = 0;
 	r2.h = 0x0200;			/* the end of SDRAM */
 	r0 = [sp + Q + F_SRC];
@@ -991,8 +997,8 @@ _bvb_sobel3x3_u8_asm:
 	r1 = r1 + r0;
 	r0 = r6 << 3;
 	r1 = r1 + r0;
-	r0 = 120 (x);
-	r1 = r1 + r0;			/* BVB_SOBEL3X3_S16_SCRATCH_SIZE: 8 P + 12 B P + 120 */
+	r0 = 232 (x);
+	r1 = r1 + r0;			/* BVB_SOBEL3X3_S16_SCRATCH_SIZE: 8 P + 12 B P + 232 */
 	r0 = [sp + Q + F_SCR];
 	r2.l = 0;
 	r2.h = 0xff80;
@@ -1065,6 +1071,9 @@ _bvb_sobel3x3_u8_asm:
 	[sp + Q + F_OUT1] = r0;
 	r0 = r0 + r1;
 	[sp + Q + F_JOB] = r0;
+	r0 += 56;
+	r0 += 56;			/* BVB_DMA_JOB_BYTES */
+	[sp + Q + F_JOB2] = r0;
 	/* the output records: gx, gy (2 P apart in L1, 2 w bytes a row), mag (P, w) */
 	r0 = [sp + Q + F_GS];
 	r1 = r6 << 1;
@@ -1150,6 +1159,31 @@ _bvb_sobel3x3_u8_asm:
 .Ls16_z0le:
 	[p2++] = r0;
 	rts;
+
+	/* The two jobs change places, with their slots' keys: F_JOB is the one to prepare while
+	 * the other runs. Clobbers R0, R1. */
+.Ls16_swj:
+	r0 = [sp + F_JOB];
+	r1 = [sp + F_JOB2];
+	[sp + F_JOB] = r1;
+	[sp + F_JOB2] = r0;
+	r0 = [sp + F_K0];
+	r1 = [sp + F_K4];
+	[sp + F_K0] = r1;
+	[sp + F_K4] = r0;
+	r0 = [sp + F_K1];
+	r1 = [sp + F_K4 + 4];
+	[sp + F_K1] = r1;
+	[sp + F_K4 + 4] = r0;
+	r0 = [sp + F_K2];
+	r1 = [sp + F_K4 + 8];
+	[sp + F_K2] = r1;
+	[sp + F_K4 + 8] = r0;
+	r0 = [sp + F_K3];
+	r1 = [sp + F_K4 + 12];
+	[sp + F_K3] = r1;
+	[sp + F_K4 + 12] = r0;
+	rts;
 #undef Q
 
 	.global _bvb_sobel3x3_s16_asm
@@ -1162,7 +1196,8 @@ _bvb_sobel3x3_s16_asm:
 	sp += -64;
 	sp += -64;
 	sp += -64;
-	sp += -48;			/* LOCALS16 */
+	sp += -64;
+	sp += -4;			/* LOCALS16 */
 	[sp + F_SRC] = r0;
 	[sp + F_SS] = r1;
 	[sp + F_GX] = r2;
@@ -1240,6 +1275,7 @@ _bvb_sobel3x3_s16_asm:
 	r0 = [sp + F_JOB];
 	r1 = 1;
 	call _bvb_dma_start;
+	call .Ls16_swj;
 	r0 = [sp + F_IN0];
 	[sp + F_SRC] = r0;
 	r0 = [sp + F_P];
@@ -1778,7 +1814,7 @@ _bvb_sobel3x3_s16_asm:
 	sp += 60;
 	sp += 60;
 	sp += 60;
-	sp += 4;			/* LOCALS16 */
+	sp += 24;			/* LOCALS16 */
 	rets = [sp++];
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
@@ -1793,7 +1829,6 @@ _bvb_sobel3x3_s16_asm:
 	r0 += 1;
 	i1 = r0;
 .Ls16_db_loop:
-	call _bvb_dma_wait;
 	call .Ldoutrows;
 	r4 = r1;
 	r5 = r3;
@@ -1828,9 +1863,11 @@ _bvb_sobel3x3_s16_asm:
 	call .Lsdin;
 	r7 += 1;
 .Ls16_db_go:
+	call _bvb_dma_wait;
 	r0 = [sp + F_JOB];
 	r1 = r7;
 	call _bvb_dma_start;
+	call .Ls16_swj;
 	r0 = [sp + F_S1];
 	r1 = [sp + F_H];
 	cc = r0 < r1;
@@ -1913,7 +1950,10 @@ _bvb_sobel3x3_s16_asm:
 	jump .Ls16_db_loop;
 	/* The last band's rows are on their way: then row h-1, zero, from its output buffer. */
 .Ls16_db_end:
-	call _bvb_dma_wait;
+	r0 = [sp + F_OUT0];		/* the buffer of the job that has ended */
+	r1 = [sp + F_OUT1];
+	[sp + F_OUT0] = r1;
+	[sp + F_OUT1] = r0;
 	call .Ls16_z0;
 	r4 = [sp + F_H];
 	r4 += -1;
@@ -1933,6 +1973,7 @@ _bvb_sobel3x3_s16_asm:
 	r3 = 1;
 	call .Lsdo16;
 .Ls16_db_z:
+	call _bvb_dma_wait;
 	r0 = [sp + F_JOB];
 	r1 = r7;
 	call _bvb_dma_start;

@@ -85,7 +85,7 @@
  * pixels of it (the ring, one input line, the row buffers). 16.4 KB at width 160, 17.6 KB at
  * 320, 20.1 KB at 640. */
 #define BVB_SOBEL3X3_S16_SCRATCH_SIZE(width)                                        \
-  ((8 + 12 * BVB_SOBEL3X3_S16_BAND_ROWS(width)) * BVB_SOBEL3X3_ROW_BYTES(width) + 120)
+  ((8 + 12 * BVB_SOBEL3X3_S16_BAND_ROWS(width)) * BVB_SOBEL3X3_ROW_BYTES(width) + 232)
 
 /* Scratch bytes for sobel3x3_u8: the ring of box sums (48 bytes per 4
  * pixels), up to 8 KB to put the boundary between its rows on a 4 KB sub-bank boundary and the
