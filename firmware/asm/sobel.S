@@ -980,9 +980,9 @@ _bvb_sobel3x3_u8_asm:
 	r7 = [sp + Q + F_G];
 	r6 = r7 << 2;			/* P */
 	[sp + Q + F_P] = r6;
-	r5 = 8;				/* B: BVB_SOBEL3X3_S16_BAND_ROWS */
+	r5 = 10;			/* B: BVB_SOBEL3X3_S16_BAND_ROWS */
 	r0 = 160 (x);
-	r1 = 4;
+	r1 = 5;
 	cc = r0 < r6;
 	if cc r5 = r1;
 	r0 = 320 (x);

@@ -76,8 +76,8 @@
  * that its scratch stays within L1 bank B's 24 KB up to width 640 (the bus, not the per-band
  * set-up, sets that path's pace: firmware/asm/sobel.S). */
 #define BVB_SOBEL3X3_S16_BAND_ROWS(width)               \
-  (BVB_SOBEL3X3_ROW_BYTES(width) <= 160   ? 8           \
-   : BVB_SOBEL3X3_ROW_BYTES(width) <= 320 ? 4 : 2)
+  (BVB_SOBEL3X3_ROW_BYTES(width) <= 160   ? 10          \
+   : BVB_SOBEL3X3_ROW_BYTES(width) <= 320 ? 5 : 2)
 
 /* Scratch bytes for sobel3x3_s16: the ring (8 row strides P, the width rounded up to 4), the
  * band buffers (2 x B input rows, 2 x B rows each of gx and gy at 2 P and of mag at P), 8
