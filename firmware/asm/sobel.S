@@ -21,9 +21,10 @@
  * lane-mask words for u8, 24 bytes; H and B for s16, 16 bytes), walked by I2 (the row above)
  * and I3 (the row being made) as circular buffers; then, on the direct paths, one input line
  * (the last input row is read from a copy, so no load leaves src) and the output row buffers
- * of the row-by-row path (BVB_SOBEL3X3_S16_SCRATCH_SIZE: 2.3 KB at width 160, 9 KB at 640);
- * on the u8 kernel's DMA path also the band buffers and a DMA job (BVB_SOBEL3X3_SCRATCH_SIZE:
- * 23.1 KB at widths 320 and 640, 19.4 KB at 160 -- L1 bank B).
+ * of the row-by-row path (56 bytes per 4 pixels for s16); on the DMA paths instead the band
+ * buffers and the DMA job(s) (BVB_SOBEL3X3_SCRATCH_SIZE: 23.1 KB at widths 320 and 640, 19.4
+ * KB at 160; BVB_SOBEL3X3_S16_SCRATCH_SIZE: 20.2 KB at 160 and 640, 21.5 KB at 320 -- L1
+ * bank B).
  *
  * The DMA path (u8; frames in SDRAM, scratch in L1 data SRAM; .Ldplan and .Ldma_* after the
  * u8 entry). Input rows come into L1 in bands by memory DMA and output rows leave the same way
@@ -55,6 +56,19 @@
  * takes 14 (8 data registers). The loops load no address register they use at once; their
  * L1 sub-bank collisions are avoided by placement on the u8 DMA path only (above).
  *
+ * The DMA path of s16 (.Ldplan16, .Lsdo16, .Ls16_db_*): the same band schedule (.Lsdband,
+ * .Ldoutrows), input transfers (.Lsdin) and slot keys (.Lsd_key) as u8, bands of up to
+ * BVB_SOBEL3X3_S16_BAND_ROWS rows (10 at width 160, 5 at 320, 2 at 640). A band's job holds
+ * its gx, gy and mag rows out (slots 0-2; gx, gy 2 P bytes apart in L1, mag P) and the band
+ * after next in (slot 3, or 2 without mag): 4 transfers, BVB_DMA_MAX_XFERS. Its bound is the
+ * bus, not the core: 1 byte in and 5 out per pixel at 2 bytes per SCLK (bvb/dma.h) is 12
+ * cycles per pixel at CCLK:SCLK = 4, against the loop's 4.5. So the core prepares the next
+ * job in a second job area while the current one runs and starts it as soon as the current
+ * one ends (.Ls16_swj swaps the two with their slots' keys); the ring is not placed by
+ * sub-bank (a collision only shortens a wait). The x = 0 and x = w-1 outputs of each band
+ * (which the stream of groups fills with its neighbours' sums) are zeroed in L1 before they
+ * leave; rows 0 and h-1 leave from a zeroed row of an output buffer.
+ *
  * Measured under the model (bfbench bench, --timing bf537, frames contiguous in SDRAM: strides
  * == width; the simulator's own count, --timing none, after it):
  *   sobel3x3_u8    160x120      90,221 cycles  4.70 per pixel (bound 3.88)   sim    83,077
@@ -72,12 +86,23 @@
  *     end weigh twice as much per pixel, at 640x480 half as much.
  *     Before the DMA path (frames read in place from SDRAM through the data cache, scratch in
  *     SDRAM): 224,114 / 833,597 / 3,395,439 (11.67 / 10.85 / 11.05 per pixel).
- *   sobel3x3_s16 (no DMA path yet: reads and writes the frames in place through the data
- *     cache) 160x120 854,271 (44.49 per pixel), 320x240 3,148,637 (41.00), 640x480
- *     14,196,937 (46.21); in L1, without the model: 87,422 / 347,146 / 1,384,986 (4.55 / 4.52
- *     / 4.51 per pixel with the magnitude), without mag 68,076 / 270,076 / 1,077,276.
+ *   sobel3x3_s16   160x120     240,235 cycles 12.51 per pixel (bound 4.37)   sim   104,812
+ *     DMA path,    320x240     946,422        12.32           (bound 4.43)   sim   385,953
+ *     scratch L1B  640x480   3,797,007        12.36           (bound 4.47)   sim 1,543,537
+ *     (C -O2 from SDRAM: 2,363,110 / 9,390,829 / 37,764,030; 9.8x, 9.9x, 9.9x; the bus's
+ *     bound, below, 12.00 per pixel at every size). With the magnitude; the core's
+ *     4.5 cycles per pixel are hidden under the bus's 12 (1 byte in and 5 out per pixel), so
+ *     the bus floor is 921,600 at 320x240. Over it, 24,800 (2.7%): the stream's per-job cost
+ *     (10 SCLK to start and 8 descriptors of 7 SCLK: 264 core cycles, bvb/dma.h) on 51 jobs,
+ *     some 13,500; band 0 (2 rows) before pass 1 can start, about 1,300 (both estimates from
+ *     bvb/dma.h's stream costs, not measured apart); the rest the
+ *     core's start of each job (its MMR writes at SCLK) while the stream idles, and the last
+ *     job (row h-1). Before the DMA path (frames read and written in place through the data
+ *     cache): 854,271 (44.49 per pixel) / 3,148,637 (41.00) / 14,196,937 (46.21); in L1,
+ *     without the model: 87,422 / 347,146 / 1,384,986 (4.55 / 4.52 / 4.51 per pixel with the
+ *     magnitude), without mag 68,076 / 270,076 / 1,077,276.
  *   The inner loop is 16 (u8), 14 or 18 (s16) cycles per 4 pixels, run as one stream over the
- *   frame (u8 DMA path: over each band); the rest is the first row of blocks (9 cycles per 4
+ *   frame (DMA paths: over each band); the rest is the first row of blocks (9 cycles per 4
  *   pixels), the ring's lane masks, the zero rows and, for s16, the border columns (7 cycles a
  *   row).
  *   Other layouts, on the direct paths (simulator's counts, same method, the bench's frames
