@@ -21,9 +21,10 @@
  * lane-mask words for u8, 24 bytes; H and B for s16, 16 bytes), walked by I2 (the row above)
  * and I3 (the row being made) as circular buffers; then, on the direct paths, one input line
  * (the last input row is read from a copy, so no load leaves src) and the output row buffers
- * of the row-by-row path (BVB_SOBEL3X3_S16_SCRATCH_SIZE: 2.3 KB at width 160, 9 KB at 640);
- * on the u8 kernel's DMA path also the band buffers and a DMA job (BVB_SOBEL3X3_SCRATCH_SIZE:
- * 23.1 KB at widths 320 and 640, 19.4 KB at 160 -- L1 bank B).
+ * of the row-by-row path (56 bytes per 4 pixels for s16); on the DMA paths instead the band
+ * buffers and the DMA job(s) (BVB_SOBEL3X3_SCRATCH_SIZE: 23.1 KB at widths 320 and 640, 19.4
+ * KB at 160; BVB_SOBEL3X3_S16_SCRATCH_SIZE: 20.2 KB at 160 and 640, 21.5 KB at 320 -- L1
+ * bank B).
  *
  * The DMA path (u8; frames in SDRAM, scratch in L1 data SRAM; .Ldplan and .Ldma_* after the
  * u8 entry). Input rows come into L1 in bands by memory DMA and output rows leave the same way
@@ -55,6 +56,19 @@
  * takes 14 (8 data registers). The loops load no address register they use at once; their
  * L1 sub-bank collisions are avoided by placement on the u8 DMA path only (above).
  *
+ * The DMA path of s16 (.Ldplan16, .Lsdo16, .Ls16_db_*): the same band schedule (.Lsdband,
+ * .Ldoutrows), input transfers (.Lsdin) and slot keys (.Lsd_key) as u8, bands of up to
+ * BVB_SOBEL3X3_S16_BAND_ROWS rows (10 at width 160, 5 at 320, 2 at 640). A band's job holds
+ * its gx, gy and mag rows out (slots 0-2; gx, gy 2 P bytes apart in L1, mag P) and the band
+ * after next in (slot 3, or 2 without mag): 4 transfers, BVB_DMA_MAX_XFERS. Its bound is the
+ * bus, not the core: 1 byte in and 5 out per pixel at 2 bytes per SCLK (bvb/dma.h) is 12
+ * cycles per pixel at CCLK:SCLK = 4, against the loop's 4.5. So the core prepares the next
+ * job in a second job area while the current one runs and starts it as soon as the current
+ * one ends (.Ls16_swj swaps the two with their slots' keys); the ring is not placed by
+ * sub-bank (a collision only shortens a wait). The x = 0 and x = w-1 outputs of each band
+ * (which the stream of groups fills with its neighbours' sums) are zeroed in L1 before they
+ * leave; rows 0 and h-1 leave from a zeroed row of an output buffer.
+ *
  * Measured under the model (bfbench bench, --timing bf537, frames contiguous in SDRAM: strides
  * == width; the simulator's own count, --timing none, after it):
  *   sobel3x3_u8    160x120      90,221 cycles  4.70 per pixel (bound 3.88)   sim    83,077
@@ -72,12 +86,23 @@
  *     end weigh twice as much per pixel, at 640x480 half as much.
  *     Before the DMA path (frames read in place from SDRAM through the data cache, scratch in
  *     SDRAM): 224,114 / 833,597 / 3,395,439 (11.67 / 10.85 / 11.05 per pixel).
- *   sobel3x3_s16 (no DMA path yet: reads and writes the frames in place through the data
- *     cache) 160x120 854,271 (44.49 per pixel), 320x240 3,148,637 (41.00), 640x480
- *     14,196,937 (46.21); in L1, without the model: 87,422 / 347,146 / 1,384,986 (4.55 / 4.52
- *     / 4.51 per pixel with the magnitude), without mag 68,076 / 270,076 / 1,077,276.
+ *   sobel3x3_s16   160x120     240,235 cycles 12.51 per pixel (bound 4.37)   sim   104,812
+ *     DMA path,    320x240     946,422        12.32           (bound 4.43)   sim   385,953
+ *     scratch L1B  640x480   3,797,007        12.36           (bound 4.47)   sim 1,543,537
+ *     (C -O2 from SDRAM: 2,363,110 / 9,390,829 / 37,764,030; 9.8x, 9.9x, 9.9x; the bus's
+ *     bound, below, 12.00 per pixel at every size). With the magnitude; the core's
+ *     4.5 cycles per pixel are hidden under the bus's 12 (1 byte in and 5 out per pixel), so
+ *     the bus floor is 921,600 at 320x240. Over it, 24,800 (2.7%): the stream's per-job cost
+ *     (10 SCLK to start and 8 descriptors of 7 SCLK: 264 core cycles, bvb/dma.h) on 51 jobs,
+ *     some 13,500; band 0 (2 rows) before pass 1 can start, about 1,300 (both estimates from
+ *     bvb/dma.h's stream costs, not measured apart); the rest the
+ *     core's start of each job (its MMR writes at SCLK) while the stream idles, and the last
+ *     job (row h-1). Before the DMA path (frames read and written in place through the data
+ *     cache): 854,271 (44.49 per pixel) / 3,148,637 (41.00) / 14,196,937 (46.21); in L1,
+ *     without the model: 87,422 / 347,146 / 1,384,986 (4.55 / 4.52 / 4.51 per pixel with the
+ *     magnitude), without mag 68,076 / 270,076 / 1,077,276.
  *   The inner loop is 16 (u8), 14 or 18 (s16) cycles per 4 pixels, run as one stream over the
- *   frame (u8 DMA path: over each band); the rest is the first row of blocks (9 cycles per 4
+ *   frame (DMA paths: over each band); the rest is the first row of blocks (9 cycles per 4
  *   pixels), the ring's lane masks, the zero rows and, for s16, the border columns (7 cycles a
  *   row).
  *   Other layouts, on the direct paths (simulator's counts, same method, the bench's frames
@@ -144,7 +169,21 @@
 #define F_K0    188	/* what job slots 0 and 1 were last prepared for: 2 rows + (1 in, 0 out) */
 #define F_K1    192
 #define LOCALS  200
-#define LOCALS16 112	/* the s16 kernel's frame: F_C .. F_DG only */
+/* The s16 kernel's DMA path: job slots 2 and 3, and per output slot (0 gx, 1 gy, 2 mag) a
+ * record of 32 bytes: SDRAM base, SDRAM stride, L1 row stride, bytes per row, offset of its
+ * rows in an output band buffer. */
+#define F_K2    196
+#define F_K3    200
+#define F_REC   204
+#define R_BASE  0
+#define R_STR   4
+#define R_L1S   8
+#define R_W     12
+#define R_OFF   16
+#define F_NI    300	/* output transfers per band: 3 with mag, else 2 */
+#define F_JOB2  304	/* the other job, and its slots' keys (.Ls16_swj) */
+#define F_K4    308
+#define LOCALS16 324	/* the s16 kernel's frame */
 #define ARGS16  (LOCALS16 + 36)
 #define ARGS    (LOCALS + 36)	/* [sp + ARGS + 12]: the 4th argument */
 
@@ -897,6 +936,7 @@ _bvb_sobel3x3_u8_asm:
 	[sp + Q + F_X + DMAX_ROWS] = r3;
 	r2 = [sp + Q + F_W];
 	[sp + Q + F_X + DMAX_W] = r2;
+.Lsd_key:
 	/* the slot's key, 2 rows + direction: the same as last time, only the addresses move */
 	r1 = r0;
 	r2 = r3 << 1;
@@ -920,6 +960,255 @@ _bvb_sobel3x3_u8_asm:
 	r0 = 0;
 	rets = [sp++];
 	rts;
+
+	/* The banded DMA path of the s16 kernel: the u8 kernel's band schedule (.Lsdband,
+	 * .Ldoutrows), its input transfers (.Lsdin) and its slot keys (.Lsd_key), with three
+	 * output transfers (gx, gy and, when mag is not NULL, mag) per band instead of one.
+	 *
+	 * .Ldplan16: F_JOB = the job when src, gx, gy or mag is in SDRAM, the scratch in L1 data
+	 * SRAM and DMA reaches all of them, else 0 (the direct paths). The scratch then holds the
+	 * ring (8 P bytes), two input buffers of B rows P = 4 G bytes apart and 8 bytes of
+	 * over-read room, two output buffers of B rows of gx (2 P bytes apart), B of gy and B of
+	 * mag (P apart), and the job: BVB_SOBEL3X3_S16_SCRATCH_SIZE. No sub-bank placement: the
+	 * bus, not the core, sets this path's pace (5 bytes out and 1 in per pixel, 12 cycles,
+	 * against the loop's 4.5), so collisions in the loop only shorten the waits. */
+.Ldplan16:
+	[--sp] = rets;
+	r0 = 0;
+	[sp + Q + F_JOB] = r0;
+	r0 = -1;
+	[sp + Q + F_K0] = r0;
+	[sp + Q + F_K1] = r0;
+	[sp + Q + F_K2] = r0;
+	[sp + Q + F_K3] = r0;
+	[sp + Q + F_K4] = r0;
+	[sp + Q + F_K4 + 4] = r0;
+	[sp + Q + F_K4 + 8] = r0;
+	[sp + Q + F_K4 + 12] = r0;
+	r2.l = 0;
+	r2.h = 0x0200;			/* the end of SDRAM */
+	r0 = [sp + Q + F_SRC];
+	cc = r0 < r2 (iu);
+	if cc jump .Ldq_f;
+	r0 = [sp + Q + F_GX];
+	cc = r0 < r2 (iu);
+	if cc jump .Ldq_f;
+	r0 = [sp + Q + F_GY];
+	cc = r0 < r2 (iu);
+	if cc jump .Ldq_f;
+	r0 = [sp + Q + F_DST];
+	cc = r0 == 0;
+	if cc jump .Ldq_x;
+	cc = r0 < r2 (iu);
+	if !cc jump .Ldq_x;		/* every frame in L1 (or the window): in place */
+.Ldq_f:
+	r7 = [sp + Q + F_G];
+	r6 = r7 << 2;			/* P */
+	[sp + Q + F_P] = r6;
+	r5 = 10;			/* B: BVB_SOBEL3X3_S16_BAND_ROWS */
+	r0 = 160 (x);
+	r1 = 5;
+	cc = r0 < r6;
+	if cc r5 = r1;
+	r0 = 320 (x);
+	r1 = 2;
+	cc = r0 < r6;
+	if cc r5 = r1;
+	[sp + Q + F_B] = r5;
+	r4 = r5;
+	r4 *= r6;			/* B P */
+	r1 = r4 << 3;
+	r0 = r4 << 2;
+	r1 = r1 + r0;
+	r0 = r6 << 3;
+	r1 = r1 + r0;
+	r0 = 232 (x);
+	r1 = r1 + r0;			/* BVB_SOBEL3X3_S16_SCRATCH_SIZE: 8 P + 12 B P + 232 */
+	r0 = [sp + Q + F_SCR];
+	r2.l = 0;
+	r2.h = 0xff80;
+	cc = r0 < r2 (iu);
+	if cc jump .Ldq_x;		/* scratch in SDRAM: nothing to gain */
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ldq_x;
+	r0 = [sp + Q + F_H];
+	r0 += -1;
+	r1 = [sp + Q + F_SS];
+	r0 *= r1;
+	r1 = [sp + Q + F_W];
+	r1 = r0 + r1;
+	r0 = [sp + Q + F_SRC];
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ldq_x;
+	r0 = [sp + Q + F_H];
+	r0 += -1;
+	r1 = [sp + Q + F_GS];
+	r0 *= r1;
+	r1 = [sp + Q + F_W];
+	r1 <<= 1;
+	r1 = r0 + r1;
+	r0 = [sp + Q + F_GX];
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ldq_x;
+	r0 = [sp + Q + F_H];
+	r0 += -1;
+	r1 = [sp + Q + F_GS];
+	r0 *= r1;
+	r1 = [sp + Q + F_W];
+	r1 <<= 1;
+	r1 = r0 + r1;
+	r0 = [sp + Q + F_GY];
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ldq_x;
+	r3 = 2;				/* output transfers per band */
+	r0 = [sp + Q + F_DST];
+	cc = r0 == 0;
+	if cc jump .Ldq_l;
+	r0 = [sp + Q + F_H];
+	r0 += -1;
+	r1 = [sp + Q + F_DS];
+	r0 *= r1;
+	r1 = [sp + Q + F_W];
+	r1 = r0 + r1;
+	r0 = [sp + Q + F_DST];
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ldq_x;
+	r3 = 3;
+.Ldq_l:
+	[sp + Q + F_NI] = r3;
+	r0 = [sp + Q + F_SCR];		/* the ring */
+	r1 = r6 << 3;
+	r0 = r0 + r1;
+	[sp + Q + F_IN0] = r0;
+	r0 = r0 + r4;
+	[sp + Q + F_IN1] = r0;
+	r0 = r0 + r4;
+	r0 += 8;
+	[sp + Q + F_OUT0] = r0;
+	r1 = r4 << 2;
+	r1 = r1 + r4;			/* 5 B P */
+	r0 = r0 + r1;
+	[sp + Q + F_OUT1] = r0;
+	r0 = r0 + r1;
+	[sp + Q + F_JOB] = r0;
+	r0 += 56;
+	r0 += 56;			/* BVB_DMA_JOB_BYTES */
+	[sp + Q + F_JOB2] = r0;
+	/* the output records: gx, gy (2 P apart in L1, 2 w bytes a row), mag (P, w) */
+	r0 = [sp + Q + F_GS];
+	r1 = r6 << 1;
+	r2 = [sp + Q + F_W];
+	r3 = r2 << 1;
+	[sp + Q + F_REC + R_STR] = r0;
+	[sp + Q + F_REC + 32 + R_STR] = r0;
+	[sp + Q + F_REC + R_L1S] = r1;
+	[sp + Q + F_REC + 32 + R_L1S] = r1;
+	[sp + Q + F_REC + R_W] = r3;
+	[sp + Q + F_REC + 32 + R_W] = r3;
+	[sp + Q + F_REC + 64 + R_L1S] = r6;
+	[sp + Q + F_REC + 64 + R_W] = r2;
+	r0 = [sp + Q + F_GX];
+	[sp + Q + F_REC + R_BASE] = r0;
+	r0 = [sp + Q + F_GY];
+	[sp + Q + F_REC + 32 + R_BASE] = r0;
+	r0 = [sp + Q + F_DST];
+	[sp + Q + F_REC + 64 + R_BASE] = r0;
+	r0 = [sp + Q + F_DS];
+	[sp + Q + F_REC + 64 + R_STR] = r0;
+	r0 = 0;
+	[sp + Q + F_REC + R_OFF] = r0;
+	r0 = r4 << 1;			/* 2 B P */
+	[sp + Q + F_REC + 32 + R_OFF] = r0;
+	r0 <<= 1;			/* 4 B P */
+	[sp + Q + F_REC + 64 + R_OFF] = r0;
+	r0 = [sp + Q + F_SRC];
+	[sp + Q + F_OSRC] = r0;
+	r0 = [sp + Q + F_SS];
+	[sp + Q + F_OSS] = r0;
+.Ldq_x:
+	rets = [sp++];
+	rts;
+
+	/* Job slot r0 (0 gx, 1 gy, 2 mag): r3 output rows from F_OUT0's buffer to the frame's
+	 * rows r1 .. (record r0). r0: bvb_dma_prepare's. */
+.Lsdo16:
+	[--sp] = rets;
+	p2 = r0;
+	p1 = r0;
+	p0 = 0;
+	p2 = p2 << 2;
+	p2 = p2 << 2;
+	p2 = p2 << 1;
+	p2 = p2 + sp;			/* the record, at [p2 + Q + F_REC] */
+	[sp + Q + F_X + DMAX_ROWS] = r3;
+	r2 = [p2 + Q + F_REC + R_STR];
+	[sp + Q + F_X + DMAX_DS] = r2;
+	r1 *= r2;
+	r2 = [p2 + Q + F_REC + R_BASE];
+	r1 = r1 + r2;
+	[sp + Q + F_X + DMAX_DST] = r1;
+	r2 = [p2 + Q + F_REC + R_L1S];
+	[sp + Q + F_X + DMAX_SS] = r2;
+	r2 = [p2 + Q + F_REC + R_W];
+	[sp + Q + F_X + DMAX_W] = r2;
+	r1 = [p2 + Q + F_REC + R_OFF];
+	r2 = [sp + Q + F_OUT0];
+	r1 = r1 + r2;
+	[sp + Q + F_X + DMAX_SRC] = r1;
+	jump .Lsd_key;
+
+	/* Row 0 of F_OUT0's gx, gy and mag rows: 0 (output rows 0 and h-1). Clobbers R0, R1,
+	 * P0-P3. */
+.Ls16_z0:
+	r0 = [sp + F_OUT0];
+	p0 = r0;
+	r1 = [sp + F_REC + 32 + R_OFF];
+	r1 = r1 + r0;
+	p1 = r1;
+	r1 = [sp + F_REC + 64 + R_OFF];
+	r1 = r1 + r0;
+	p2 = r1;
+	p3 = [sp + F_G];
+	r0 = 0;
+	lsetup (.Ls16_z0l, .Ls16_z0le) lc0 = p3;
+.Ls16_z0l:
+	[p0++] = r0;
+	[p0++] = r0;
+	[p1++] = r0;
+	[p1++] = r0;
+.Ls16_z0le:
+	[p2++] = r0;
+	rts;
+
+	/* The two jobs change places, with their slots' keys: F_JOB is the one to prepare while
+	 * the other runs. Clobbers R0, R1. */
+.Ls16_swj:
+	r0 = [sp + F_JOB];
+	r1 = [sp + F_JOB2];
+	[sp + F_JOB] = r1;
+	[sp + F_JOB2] = r0;
+	r0 = [sp + F_K0];
+	r1 = [sp + F_K4];
+	[sp + F_K0] = r1;
+	[sp + F_K4] = r0;
+	r0 = [sp + F_K1];
+	r1 = [sp + F_K4 + 4];
+	[sp + F_K1] = r1;
+	[sp + F_K4 + 4] = r0;
+	r0 = [sp + F_K2];
+	r1 = [sp + F_K4 + 8];
+	[sp + F_K2] = r1;
+	[sp + F_K4 + 8] = r0;
+	r0 = [sp + F_K3];
+	r1 = [sp + F_K4 + 12];
+	[sp + F_K3] = r1;
+	[sp + F_K4 + 12] = r0;
+	rts;
 #undef Q
 
 	.global _bvb_sobel3x3_s16_asm
@@ -929,7 +1218,11 @@ _bvb_sobel3x3_s16_asm:
 	[--sp] = fp;
 	[--sp] = rets;
 	sp += -64;
-	sp += -48;			/* LOCALS16 */
+	sp += -64;
+	sp += -64;
+	sp += -64;
+	sp += -64;
+	sp += -4;			/* LOCALS16 */
 	[sp + F_SRC] = r0;
 	[sp + F_SS] = r1;
 	[sp + F_GX] = r2;
@@ -976,6 +1269,47 @@ _bvb_sobel3x3_s16_asm:
 	r0 = r0 + r4;
 	[sp + F_END] = r0;
 
+	/* Frames in SDRAM and the scratch in L1: the banded DMA path (.Ldplan16, .Ls16_db_*).
+	 * Band 0 (input rows 0 and 1) comes in while output row 0 is zeroed in L1. */
+	call .Ldplan16;
+	r0 = [sp + F_JOB];
+	cc = r0 == 0;
+	if cc jump .Ls16_zrows;
+	r0 = 0;
+	r1 = 0;
+	r2 = [sp + F_IN0];
+	r3 = 2;
+	call .Lsdin;
+	r0 = [sp + F_JOB];
+	r1 = 1;
+	call _bvb_dma_start;
+	call .Ls16_z0;
+	call _bvb_dma_wait;
+	r0 = 0;
+	[sp + F_S] = r0;
+	r0 = 2;
+	[sp + F_N] = r0;
+	[sp + F_S1] = r0;
+	call .Lsdband;
+	[sp + F_N1] = r0;
+	r3 = r0;
+	r0 = 0;
+	r1 = 2;
+	r2 = [sp + F_IN1];
+	call .Lsdin;
+	r0 = [sp + F_JOB];
+	r1 = 1;
+	call _bvb_dma_start;
+	call .Ls16_swj;
+	r0 = [sp + F_IN0];
+	[sp + F_SRC] = r0;
+	r0 = [sp + F_P];
+	[sp + F_SS] = r0;
+	r0 = -1;
+	[sp + F_END] = r0;		/* .Linrow: nothing to copy */
+	jump .Ls16_nomag0;
+
+.Ls16_zrows:
 	/* Rows 0 and h-1 are 0. */
 	p0 = [sp + F_GX];
 	p1 = [sp + F_W];
@@ -1093,6 +1427,9 @@ _bvb_sobel3x3_s16_asm:
 	i3 = r3;			/* block G, at B(-1) */
 	m1 = 6 (x);
 	m2 = -4 (x);
+	r0 = [sp + F_JOB];
+	cc = r0 == 0;
+	if !cc jump .Ls16_dma_bands;
 
 	/* One stream over the whole frame when src, gx, gy (and mag) rows are contiguous and
 	 * aligned; the border columns are then zeroed afterwards. */
@@ -1497,12 +1834,176 @@ _bvb_sobel3x3_s16_asm:
 	l1 = r0;
 	l2 = r0;
 	l3 = r0;
-	sp += 56;
-	sp += 56;			/* LOCALS16 */
+	sp += 60;
+	sp += 60;
+	sp += 60;
+	sp += 60;
+	sp += 60;
+	sp += 24;			/* LOCALS16 */
 	rets = [sp++];
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;
+	/* The DMA path's bands (.Ldplan16): band j (F_S, F_N, buffers F_IN0, F_OUT0) computed,
+	 * band j+1 (F_S1, F_N1, F_IN1, F_OUT1) in or arriving. Wait for it, start the job that
+	 * sends band j's gx, gy (and mag) rows out and brings band j+2 into band j's input
+	 * buffer (up to 4 transfers), compute band j+1, zero its border columns, and so on. */
+.Ls16_dma_bands:
+	r0 = [sp + F_IN0];
+	i0 = r0;			/* BYTEOP16P's byte offsets: rows in L1 are word aligned */
+	r0 += 1;
+	i1 = r0;
+.Ls16_db_loop:
+	call .Ldoutrows;
+	r4 = r1;
+	r5 = r3;
+	r0 = 0;
+	call .Lsdo16;
+	r0 = 1;
+	r1 = r4;
+	r3 = r5;
+	call .Lsdo16;
+	r7 = [sp + F_NI];
+	cc = r7 == 2;
+	if cc jump .Ls16_db_i;
+	r0 = 2;
+	r1 = r4;
+	r3 = r5;
+	call .Lsdo16;
+.Ls16_db_i:
+	r5 = 0;
+	r0 = [sp + F_S1];
+	r1 = [sp + F_N1];
+	r6 = r0 + r1;			/* band j+2 */
+	r1 = [sp + F_H];
+	cc = r6 < r1;
+	if !cc jump .Ls16_db_go;
+	r0 = r6;
+	call .Lsdband;
+	r5 = r0;
+	r3 = r0;
+	r0 = r7;
+	r1 = r6;
+	r2 = [sp + F_IN0];
+	call .Lsdin;
+	r7 += 1;
+.Ls16_db_go:
+	call _bvb_dma_wait;
+	r0 = [sp + F_JOB];
+	r1 = r7;
+	call _bvb_dma_start;
+	call .Ls16_swj;
+	r0 = [sp + F_S1];
+	r1 = [sp + F_H];
+	cc = r0 < r1;
+	if !cc jump .Ls16_db_end;
+	/* band j+1 becomes band j */
+	[sp + F_S] = r0;
+	r0 = [sp + F_N1];
+	[sp + F_N] = r0;
+	[sp + F_S1] = r6;
+	[sp + F_N1] = r5;
+	r0 = [sp + F_IN0];
+	r1 = [sp + F_IN1];
+	[sp + F_IN0] = r1;
+	[sp + F_IN1] = r0;
+	r0 = [sp + F_OUT0];
+	r1 = [sp + F_OUT1];
+	[sp + F_OUT0] = r1;
+	[sp + F_OUT1] = r0;
+	p0 = [sp + F_IN0];
+	p1 = p0;
+	p2 = r1;
+	r0 = [sp + F_REC + 32 + R_OFF];
+	r0 = r0 + r1;
+	p3 = r0;
+	r0 = [sp + F_REC + 64 + R_OFF];
+	r0 = r0 + r1;
+	p4 = r0;
+	r0 = [sp + F_N];
+	r1 = [sp + F_G];
+	r0 *= r1;
+	r0 += -1;
+	p5 = r0;
+	r0 = [sp + F_DST];
+	cc = r0 == 0;
+	if cc jump .Ls16_db_nm;
+	call .Lseg16m;
+	jump .Ls16_db_b;
+.Ls16_db_nm:
+	call .Lseg16;
+.Ls16_db_b:
+	/* x = 0 and x = w-1 of the band's output rows are 0. */
+	r0 = [sp + F_OUT0];
+	r1 = [sp + F_W];
+	r1 += -1;
+	r2 = r1 << 1;			/* x = w-1 in gx, gy */
+	p0 = r0;
+	r3 = r0 + r2;
+	p1 = r3;
+	r3 = [sp + F_REC + 32 + R_OFF];
+	r3 = r3 + r0;
+	p2 = r3;
+	r3 = r3 + r2;
+	p3 = r3;
+	p4 = [sp + F_REC + R_L1S];
+	p5 = [sp + F_N];
+	r2 = 0;
+	lsetup (.Ls16_db_bl, .Ls16_db_ble) lc0 = p5;
+.Ls16_db_bl:
+	w[p0 ++ p4] = r2.l;
+	w[p1 ++ p4] = r2.l;
+	w[p2 ++ p4] = r2.l;
+.Ls16_db_ble:
+	w[p3 ++ p4] = r2.l;
+	r3 = [sp + F_DST];
+	cc = r3 == 0;
+	if cc jump .Ls16_db_loop;
+	r3 = [sp + F_REC + 64 + R_OFF];
+	r3 = r3 + r0;
+	p0 = r3;
+	r3 = r3 + r1;
+	p1 = r3;
+	p2 = [sp + F_P];
+	lsetup (.Ls16_db_ml, .Ls16_db_mle) lc0 = p5;
+.Ls16_db_ml:
+	b[p0] = r2;
+	b[p1] = r2;
+	p0 = p0 + p2;
+.Ls16_db_mle:
+	p1 = p1 + p2;
+	jump .Ls16_db_loop;
+	/* The last band's rows are on their way: then row h-1, zero, from its output buffer. */
+.Ls16_db_end:
+	r0 = [sp + F_OUT0];		/* the buffer of the job that has ended */
+	r1 = [sp + F_OUT1];
+	[sp + F_OUT0] = r1;
+	[sp + F_OUT1] = r0;
+	call .Ls16_z0;
+	r4 = [sp + F_H];
+	r4 += -1;
+	r0 = 0;
+	r1 = r4;
+	r3 = 1;
+	call .Lsdo16;
+	r0 = 1;
+	r1 = r4;
+	r3 = 1;
+	call .Lsdo16;
+	r7 = [sp + F_NI];
+	cc = r7 == 2;
+	if cc jump .Ls16_db_z;
+	r0 = 2;
+	r1 = r4;
+	r3 = 1;
+	call .Lsdo16;
+.Ls16_db_z:
+	call _bvb_dma_wait;
+	r0 = [sp + F_JOB];
+	r1 = r7;
+	call _bvb_dma_start;
+	call _bvb_dma_wait;
+	jump .Ls16_done;
 	.size _bvb_sobel3x3_s16_asm, . - _bvb_sobel3x3_s16_asm
 
 

@@ -39,10 +39,11 @@
  *
  * Working set and memory
  *   Frames live in SDRAM, where the camera's DMA puts them. scratch holds two rows of box sums
- *   and horizontal pair sums (48 bytes per 4 pixels of width for u8, 32 for s16) and, for the
- *   u8 kernel (BVB_SOBEL3X3_SCRATCH_SIZE), the band buffers and a DMA job: 23.1 KB at widths
- *   320 and 640, 19.4 KB at 160; s16 needs 2.3 KB at 160, 9 KB at 640. It belongs in L1 data
- *   SRAM: bank B has room for the u8 kernel's (bank A keeps 16 KB beside its data cache).
+ *   and horizontal pair sums (48 bytes per 4 pixels of width for u8, 32 for s16), the band
+ *   buffers and the DMA job(s): u8 (BVB_SOBEL3X3_SCRATCH_SIZE) 23.1 KB at widths 320 and 640,
+ *   19.4 KB at 160; s16 (BVB_SOBEL3X3_S16_SCRATCH_SIZE) 20.2 KB at 160 and 640, 21.5 KB at
+ *   320. It belongs in L1 data SRAM: bank B has room for either (bank A keeps 16 KB beside its
+ *   data cache).
  *   sobel3x3_u8, when src or dst is in SDRAM and scratch in L1 data SRAM, never reads or writes
  *   a frame through the core: input rows come into L1 in bands by memory DMA (bvb/dma.h) and
  *   output rows leave the same way, double-buffered. While the core computes band j+1 from one
@@ -55,9 +56,17 @@
  *   strides, so every layout runs the same single stream of groups per band. The ring's two
  *   rows sit on either side of a 4 KB sub-bank boundary and the band buffers in other
  *   sub-banks, so the dual accesses of the inner loop never collide (firmware/asm/sobel.S).
- *   Otherwise (both frames in L1, or scratch in SDRAM or the scratchpad, which DMA cannot
- *   reach), and always for sobel3x3_s16, the kernels read each input row once, in order, and
- *   write each output row once, in place. */
+ *   sobel3x3_s16, when src, gx, gy or mag is in SDRAM and scratch in L1 data SRAM, does the
+ *   same with the same band schedule (bands of up to BVB_SOBEL3X3_S16_BAND_ROWS(width) rows:
+ *   10 at width 160, 5 at 320, 2 at 640), its band buffers holding B rows each of gx, gy (2 P
+ *   bytes apart) and mag (P): a band's job sends its gx, gy and mag rows (3 transfers, 2
+ *   without mag) and brings the band after next in (the 4th). Its bus time, 1 byte in and 5
+ *   out per pixel at 0.5 byte per core cycle, is 12 cycles per pixel against 4.5 of compute,
+ *   so the job after next is prepared in a second job while one runs, and the stream idles
+ *   only while the core starts it; the ring is not placed by sub-bank (the core waits anyway).
+ *   Otherwise (every frame in L1, or scratch in SDRAM or the scratchpad, which DMA cannot
+ *   reach), the kernels read each input row once, in order, and write each output row once,
+ *   in place. */
 #ifndef BVB_SOBEL_H
 #define BVB_SOBEL_H
 
@@ -72,8 +81,20 @@
    : BVB_SOBEL3X3_ROW_BYTES(width) <= 320 ? 10          \
    : BVB_SOBEL3X3_ROW_BYTES(width) <= 640 ? 4 : 2)
 
-/* Scratch bytes for sobel3x3_s16: the ring, one input line, the row buffers. */
-#define BVB_SOBEL3X3_S16_SCRATCH_SIZE(width) (56 * (((width) + 3) / 4) + 64)
+/* Rows per band of the s16 kernel's DMA path: 10 at widths up to 160, 5 up to 320, else 2, so
+ * that its scratch stays within L1 bank B's 24 KB up to width 640 (the bus, not the per-band
+ * set-up, sets that path's pace: firmware/asm/sobel.S). */
+#define BVB_SOBEL3X3_S16_BAND_ROWS(width)               \
+  (BVB_SOBEL3X3_ROW_BYTES(width) <= 160   ? 10          \
+   : BVB_SOBEL3X3_ROW_BYTES(width) <= 320 ? 5 : 2)
+
+/* Scratch bytes for sobel3x3_s16: the ring (8 row strides P, the width rounded up to 4), the
+ * band buffers (2 x B input rows, 2 x B rows each of gx and gy at 2 P and of mag at P), 8
+ * bytes of over-read room and two DMA jobs; the direct paths use the first 56 bytes per 4
+ * pixels of it (the ring, one input line, the row buffers). 20.2 KB at widths 160 and 640,
+ * 21.5 KB at 320. */
+#define BVB_SOBEL3X3_S16_SCRATCH_SIZE(width)                                        \
+  ((8 + 12 * BVB_SOBEL3X3_S16_BAND_ROWS(width)) * BVB_SOBEL3X3_ROW_BYTES(width) + 232)
 
 /* Scratch bytes for sobel3x3_u8: the ring of box sums (48 bytes per 4
  * pixels), up to 8 KB to put the boundary between its rows on a 4 KB sub-bank boundary and the
