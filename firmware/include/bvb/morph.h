@@ -26,8 +26,21 @@
 
 #include <stdint.h>
 
-/* Four rows of 8 * ceil(width / 8) + 8 halfwords. */
-#define BVB_MORPH3X3_SCRATCH_BYTES(width) (4 * 2 * (8 * (((width) + 7) / 8) + 8))
+#include "bvb/dma.h"
+
+/* One H row: 8 * ceil(width / 8) + 8 halfwords. Band rows in L1: the width rounded up to 4
+ * apart, up to BVB_MORPH3X3_BAND_ROWS(width) rows per band. */
+#define BVB_MORPH3X3_HROW_BYTES(width) (2 * (8 * (((width) + 7) / 8) + 8))
+#define BVB_MORPH3X3_ROW_BYTES(width) (4 * (((width) + 3) / 4))
+#define BVB_MORPH3X3_BAND_ROWS(width)                   \
+  (BVB_MORPH3X3_ROW_BYTES(width) <= 160   ? 16          \
+   : BVB_MORPH3X3_ROW_BYTES(width) <= 320 ? 10          \
+   : BVB_MORPH3X3_ROW_BYTES(width) <= 640 ? 4 : 2)
+/* Four H rows; for the DMA path also two input bands of B rows, two output bands of B + 3
+ * rows, up to 4 KB to put three H rows in a sub-bank of their own, and two DMA jobs. */
+#define BVB_MORPH3X3_SCRATCH_BYTES(width)                                              \
+  ((4 * BVB_MORPH3X3_BAND_ROWS(width) + 6) * BVB_MORPH3X3_ROW_BYTES(width) +             \
+   4 * BVB_MORPH3X3_HROW_BYTES(width) + 4096 + 2 * BVB_DMA_JOB_BYTES)
 
 #ifdef __cplusplus
 extern "C" {
