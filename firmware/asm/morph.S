@@ -124,10 +124,10 @@
 	cc = r0 == 0;
 	if cc jump .Lgo_\@;
 	/* DMA path: the H rows where .Lmplan put them, every row in L1 P bytes from the next */
+	r1 = [sp + A_SCRATCH];
+	b1 = r1;
 	r0 = [sp + L_HB];
 	b2 = r0;
-	r1 = r0 - r3;
-	b1 = r1;
 	r0 = r0 + r3;
 	m3 = r0;
 	r0 = r0 + r3;
@@ -374,15 +374,16 @@
 	 *
 	 * .Lmplan: L_JOB = a job when src or dst is in SDRAM, the scratch in L1 data SRAM and DMA
 	 * reaches all three (else 0: the frames are read and written in place). The scratch,
-	 * BVB_MORPH3X3_SCRATCH_BYTES: two input band buffers of B rows, two output band buffers
-	 * of B + 3 rows (between two band switches up to N + 1 output rows are made, after the
-	 * last one up to N + 3), rows P bytes apart; then H row b1 just below a 4 KB sub-bank
-	 * boundary and H rows b2, m3, b3 and the two jobs above it. The vertical pass loads b1
-	 * and b3 in one issue (they swap roles, as do b2 and m3), and stores output bytes beside
-	 * b2 and m3 loads; the horizontal pass loads source words beside H stores: so b1 is alone
-	 * in its sub-bank of H rows, and the band buffers share no sub-bank with b2, m3, b3 and,
-	 * when the output buffers span 4 KB (widths from 160), none with b1. Clobbers R0-R7,
-	 * P0-P2. */
+	 * BVB_MORPH3X3_SCRATCH_BYTES: H row b1; two output band buffers of B + 3 rows (between
+	 * two band switches up to N + 1 output rows are made, after the last one up to N + 3);
+	 * two input band buffers of B rows (band rows P bytes apart); H rows b2, m3, b3; the two
+	 * jobs. The vertical pass loads b1 and b3 in one issue (the two swap roles, as do b2 and
+	 * m3) and stores output bytes beside b2 or m3 loads; the horizontal pass loads source
+	 * words beside H stores. With the band buffers between b1 and the others, b1 and b3 never
+	 * share a sub-bank once the buffers span 4 KB, nor do the output buffers and b2, m3 (when
+	 * the input buffers span 4 KB). No padding to sub-bank boundaries (which would cost up to
+	 * 4 KB): the collisions left (3,256 at 320x240, --timing-report) cost the core cycles that
+	 * the stream's time hides. Clobbers R0-R7, P0-P2. */
 .Lmplan:
 	[--sp] = rets;
 	r0 = 0;
@@ -405,7 +406,7 @@
 	r6 >>= 2;
 	r6 <<= 2;			/* P */
 	[sp + Q + L_P] = r6;
-	r5 = 16;			/* B: BVB_MORPH3X3_BAND_ROWS */
+	r5 = 8;				/* B: BVB_MORPH3X3_BAND_ROWS */
 	r0 = 160 (x);
 	r1 = 10;
 	cc = r0 < r6;
@@ -429,7 +430,7 @@
 	r0 *= r6;			/* (4 B + 6) P */
 	r1 = r4 << 2;
 	r0 = r0 + r1;
-	r1 = 4096 + 224 (x);
+	r1 = 224 (x);
 	r1 = r0 + r1;			/* BVB_MORPH3X3_SCRATCH_BYTES */
 	r0 = [sp + Q + L_HB];		/* the scratch */
 	r2.l = 0;
@@ -457,26 +458,22 @@
 	call _bvb_dma_reachable;
 	cc = r0 == 0;
 	if cc jump .Lmp_x;
-	r0 = [sp + Q + L_HB];
-	[sp + Q + L_IN0] = r0;
+	r0 = [sp + Q + L_HB];		/* b1 at the scratch's start */
+	r0 = r0 + r4;
+	[sp + Q + L_OUT0] = r0;
 	r1 = r5;
 	r1 *= r6;			/* B P */
+	r2 = r6 + r6;
+	r2 = r2 + r6;
+	r2 = r2 + r1;			/* (B + 3) P */
+	r0 = r0 + r2;
+	[sp + Q + L_OUT1] = r0;
+	r0 = r0 + r2;
+	[sp + Q + L_IN0] = r0;
 	r0 = r0 + r1;
 	[sp + Q + L_IN1] = r0;
 	r0 = r0 + r1;
-	[sp + Q + L_OUT0] = r0;
-	r2 = r6 + r6;
-	r2 = r2 + r6;
-	r1 = r1 + r2;			/* (B + 3) P */
-	r0 = r0 + r1;
-	[sp + Q + L_OUT1] = r0;
-	r0 = r0 + r1;
-	r0 = r0 + r4;			/* above b1 */
-	r1 = 4095 (x);
-	r0 = r0 + r1;
-	r1 = -4096 (x);
-	r0 = r0 & r1;			/* the sub-bank boundary: b2 */
-	[sp + Q + L_HB] = r0;
+	[sp + Q + L_HB] = r0;		/* b2, then m3, b3 */
 	r1 = r4 << 1;
 	r1 = r1 + r4;
 	r0 = r0 + r1;			/* above b3: the jobs */

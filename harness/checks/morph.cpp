@@ -81,7 +81,7 @@ void check(Checker &ck) {
 }
 
 CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
-  // Frames in SDRAM, the scratch (H rows, band buffers and DMA jobs: 21.2 KB at 320) in L1 bank B.
+  // Frames in SDRAM, the scratch (H rows, band buffers and DMA jobs: 17.2 KB at 320) in L1 bank B.
   CheckCall c = morph_call(kernel, w, h, w, w, make_plane(Pattern::Noise, w, h, w, rng, ""),
                            std::to_string(w) + "x" + std::to_string(h));
   c.bufs[2].place = BVB_PLACE_L1B;
