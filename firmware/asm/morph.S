@@ -430,7 +430,7 @@
 	r0 *= r6;			/* (4 B + 6) P */
 	r1 = r4 << 2;
 	r0 = r0 + r1;
-	r1 = 224 (x);
+	r1 = 240 (x);
 	r1 = r0 + r1;			/* BVB_MORPH3X3_SCRATCH_BYTES */
 	r0 = [sp + Q + L_HB];		/* the scratch */
 	r2.l = 0;
@@ -478,9 +478,16 @@
 	r1 = r1 + r4;
 	r0 = r0 + r1;			/* above b3: the jobs */
 	[sp + Q + L_JOB] = r0;
-	r0 += 56;
-	r0 += 56;
+	p0 = r0;
+	r0 += 60;
+	r0 += 60;
 	[sp + Q + L_JOBB] = r0;
+	p1 = r0;
+	r0 = -1;			/* what each slot was last prepared for: nothing */
+	[p0 + 112] = r0;
+	[p0 + 116] = r0;
+	[p1 + 112] = r0;
+	[p1 + 116] = r0;
 .Lmp_x:
 	rets = [sp++];
 	rts;
@@ -518,6 +525,7 @@
 .Lmin_s:
 	p0 = r1;
 	p1 = r0;
+	p2 = 1;				/* in */
 	r0 = [sp + QQ + L_P];
 	[sp + QQ + L_X + DMAX_DS] = r0;
 	r0 = [sp + QQ + L_SS];
@@ -530,6 +538,7 @@
 .Lmout:
 	p0 = r1;
 	p1 = r0;
+	p2 = 0;				/* out */
 	r0 = [sp + QQ + L_OUT0];
 	[sp + QQ + L_X + DMAX_SRC] = r0;
 	r0 = [sp + QQ + L_P];
@@ -545,12 +554,24 @@
 	[sp + QQ + L_X + DMAX_ROWS] = r3;
 	r0 = [sp + QQ + L_W];
 	[sp + QQ + L_X + DMAX_W] = r0;
+	/* The slot's key, 2 rows + direction (kept after the job's descriptors): the same as
+	 * last time, and only the addresses move (bvb_dma_move: some 200 cycles less). */
+	r2 = p2;
+	r3 <<= 1;
+	r3 = r3 + r2;
 	r0 = p0;
 	r1 = p1;
+	p2 = p0 + (p1 << 2);
+	r2 = [p2 + 112];
+	[p2 + 112] = r3;
+	cc = r2 == r3;
 	r2 = sp;
 	r3 = QQ + L_X;
 	r2 = r2 + r3;
+	if cc jump .Lm_mv;
 	jump.l _bvb_dma_prepare;	/* returns to our caller */
+.Lm_mv:
+	jump.l _bvb_dma_move;
 
 	/* Band 0 (2 rows) in, waited for; band 1 on its way: I3 = band 0's first row, P4 =
 	 * the output buffer. Clobbers R0-R7, P0-P2. */

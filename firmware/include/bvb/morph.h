@@ -52,11 +52,11 @@
    : BVB_MORPH3X3_ROW_BYTES(width) <= 320 ? 10          \
    : BVB_MORPH3X3_ROW_BYTES(width) <= 640 ? 4 : 2)
 /* Four H rows; for the DMA path also two input bands of B rows, two output bands of B + 3
- * rows and two DMA jobs. Sized so that the seg_avoid pipeline's work buffer still fits in L1
+ * rows and two DMA jobs (each with 8 bytes of slot keys). Sized so that the seg_avoid pipeline's work buffer still fits in L1
  * bank B beside its map at 160x120, and alone at 320x240 (bvb/pipeline.h). */
 #define BVB_MORPH3X3_SCRATCH_BYTES(width)                                              \
   ((4 * BVB_MORPH3X3_BAND_ROWS(width) + 6) * BVB_MORPH3X3_ROW_BYTES(width) +             \
-   4 * BVB_MORPH3X3_HROW_BYTES(width) + 2 * BVB_DMA_JOB_BYTES)
+   4 * BVB_MORPH3X3_HROW_BYTES(width) + 2 * (BVB_DMA_JOB_BYTES + 8))
 
 #ifdef __cplusplus
 extern "C" {
