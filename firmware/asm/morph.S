@@ -17,14 +17,36 @@
  * byte stores (so the destination needs no alignment either): 5 ops per 2 x 2 pixels.
  *
  * Lower bound: 3.0 cycles per pixel for this method (1.75 + 1.25 above: one ALU/video op per
- * issue, every load and store in a parallel slot). Measured (bfbench bench; erosion and dilation
- * take the same cycles):
- *   160x120: C 1,032,814, asm 66,132 (15.6x, 3.44 per pixel);
- *   320x240: C 4,120,779, asm 247,392 (16.7x, 3.22);
- *   640x480: C 16,460,934, asm 955,512 (17.2x, 3.11).
- * The difference from the bound is per row, about 70 cycles: set-up of the horizontal pass
- * (the circular buffer over the source row), the right-edge fix-up, the calls, and per pair of
- * rows the vertical pass's set-up and the rotation of the four H rows.
+ * issue, every load and store in a parallel slot). With the frames in SDRAM the bound is the
+ * bus: memory DMA moves 2 bytes per SCLK (bvb/dma.h), 0.5 byte per core cycle at CCLK:SCLK = 4,
+ * and each pixel is 1 byte in and 1 byte out: 4.0 cycles per pixel, above the compute's 3.0.
+ *
+ * Measured (bfbench bench, --timing bf537, frames in SDRAM, scratch in L1 bank B; erosion and
+ * dilation take the same cycles; the simulator's own count, --timing none, after it):
+ *   160x120:  88,286 (4.60 per pixel; C 1,481,123: 16.8x)   sim  77,373
+ *   320x240: 319,260 (4.16; C 5,872,735: 18.4x)              sim 266,014
+ *   Before the DMA path (frames read and written in place through the write-back data cache,
+ *   scratch in SDRAM): 215,317 (11.21) and 784,265 (10.21).
+ * Where the 320x240 cycles go over the bus bound (307,200: 76,800 pixels x 4), 12,060 in
+ * all; the parts are estimates from bvb/dma.h's costs, not measured one by one: the stream's
+ * own overheads, per job 10 SCLK to start and 4 descriptors of 7 halfwords (28 jobs, some
+ * 4,300 cycles); the gaps between jobs while the core sees DMA_DONE and
+ * starts the next one (5 system MMR writes at 2 SCLK each, about 100 cycles a job); the start
+ * (the plan and band 0, 2 rows, before the compute starts) and the end (the last band is
+ * computed after its rows arrive, then its output rows, up to 7, go out alone: some 4,500).
+ * The core is the shorter side there: 266,014 in the simulator's count, including its polls
+ * of DMA_DONE; its L1 sub-bank collisions (3,256 in the run, --timing-report) are hidden.
+ * At 160x120 (8-row bands: the scratch must leave seg_avoid's map room in L1 bank B) the
+ * core is nearly as long as the stream: the per-row overheads below (about 70 cycles a row),
+ * the per-band work (wait, re-address two slots, start: some 400 cycles, an estimate) and the
+ * collisions add to its 3.0 per pixel.
+ *
+ * The in-place path (both frames in L1, or the scratch in SDRAM or the scratchpad), in the
+ * simulator's count with everything in L1: 160x120 66,132 (3.44 per pixel), 320x240 247,392
+ * (3.22), 640x480 955,512 (3.11). The difference from the bound is per row, about 70 cycles:
+ * set-up of the horizontal pass (the circular buffer over the source row), the right-edge
+ * fix-up, the calls, and per pair of rows the vertical pass's set-up and the rotation of the
+ * four H rows.
  *
  * Source rows are read only within the aligned words that hold their bytes: I0 runs as a
  * circular buffer over exactly those words, so the pass's read-ahead wraps instead of running
@@ -33,14 +55,20 @@
  * starts from [x0, x0] as its left neighbours. The top output row takes H(0) as its row above,
  * the bottom one H(h-1) as its row below.
  *
- * Working set: scratch, 4 rows of 8 * ceil(w / 8) + 8 halfwords (5.2 KB at 640 wide): L1 on
- * hardware.
+ * The DMA path (frames in SDRAM, scratch in L1 data SRAM; .Lmplan, .Lmstart, .Lmsw, .Lmfin
+ * after the kernels). Source rows come into L1 in bands by memory DMA (bvb/dma.h) and output
+ * rows leave the same way, on one stream, double-buffered: the source row pointer I3 and the
+ * output row pointer P4 walk the band buffers (rows P = 4 ceil(w / 4) bytes apart) exactly as
+ * they walk the frames in place, and the step to the next source row (.Lnx) at the end of a
+ * band switches bands (.Lmsw): it prepares the other of two jobs with the output rows made
+ * since the last switch and the band after next (into the input buffer just finished), waits
+ * for the running job (the next band in), starts the prepared one and goes on in the other
+ * buffers. Bands: 2, 2, 4, 8 rows, then BVB_MORPH3X3_BAND_ROWS (10 at width 320). Preparing
+ * while the stream runs keeps the stream's gaps to the wait and the start.
  *
- * Modelled (bfbench bench, --timing bf537, frames in SDRAM through the write-back data cache,
- * scratch in L1): 160x120 215,317 (11.2 cycles per pixel against the 3.0 bound), 320x240
- * 784,265 (10.2), 3.3x and 3.2x the simulator's own count: the difference is SDRAM line fills
- * of the source rows and write-backs of the output rows (2 bytes per pixel over the 16-bit bus
- * at SCLK = CCLK / 4, at least 4 cycles per pixel of bus time), not hidden by the loop. */
+ * Working set: scratch, BVB_MORPH3X3_SCRATCH_BYTES (bvb/morph.h): four H rows of
+ * 8 * ceil(w / 8) + 8 halfwords, and for the DMA path the band buffers and two jobs (7.5 KB
+ * at width 160, 17.2 KB at 320): L1 bank B. */
 
 #include "bvb/dma.h"
 
