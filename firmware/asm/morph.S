@@ -25,8 +25,9 @@
  * dilation take the same cycles; the simulator's own count, --timing none, after it):
  *   160x120:  88,286 (4.60 per pixel; C 1,481,123: 16.8x)   sim  77,373
  *   320x240: 319,260 (4.16; C 5,872,735: 18.4x)              sim 266,014
+ *   640x480: 1,271,114 (4.14; bfbench budgets)
  *   Before the DMA path (frames read and written in place through the write-back data cache,
- *   scratch in SDRAM): 215,317 (11.21) and 784,265 (10.21).
+ *   scratch in SDRAM): 215,317 (11.21), 784,265 (10.21) and 3,099,699 (10.09; the budgets).
  * Where the 320x240 cycles go over the bus bound (307,200: 76,800 pixels x 4), 12,060 in
  * all; the parts are estimates from bvb/dma.h's costs, not measured one by one: the stream's
  * own overheads, per job 10 SCLK to start and 4 descriptors of 7 halfwords (28 jobs, some
