@@ -122,7 +122,8 @@
  *     each; SDRAM at 320x240); work, BVB_SEG_AVOID_WORK_BYTES(w, queue_cap): the region
  *     growing queue (the breadth-first front of a region grown in a w x h frame stays near
  *     w + h pixels; the harness gives 2 (w + h) entries, and diag reports an overflow), the
- *     column rows (int16) and the erosion's scratch: 3.9 KB at 160x120, the L1 scratchpad.
+ *     column rows (int16) and the erosion's scratch (bvb/morph.h): 10.0 KB at 160x120, 22.2 KB at
+ *     320x240, L1 bank B (at 320x240 the erosion streams mask and map through it by DMA).
  *
  * ============================================================================================
  * OPTICAL-FLOW OBSTACLE AVOIDANCE (flow_avoid; the seed paper's section 2.1.2)
