@@ -129,11 +129,34 @@
 #define CTX_DUMMY 272 /* 36 bytes: where the program's idle chunks write (unbanked layout) */
 #define CTX_DUMMYP 312 /* the dummy area's address */
 #define CTX_SEGB 320  /* the selection sweep's pairs before the seed's column pair */
+#define CTX_DMAP 316  /* the DMA area (below), or 0: no memory DMA */
+#define CTX_TSRC 324  /* this point's template in L1 (w x w bytes), or 0: read frame 1 */
+#define CTX_BSRC 328  /* this point's search area in L1 (L x L bytes), or 0: read frame 2 */
+#define CTX_CUR 332   /* this point's entry in the points array */
 #define CTX_SIZE 336
 #define CHUNK 18      /* pixels per chunk of the copy program */
 
+/* The DMA area (banked layout, after NQ2 in sub-bank 3; bvb/ncc.h BVB_NCC_DMA_BYTES): the job,
+ * one transfer description, the state, and two sets of (search area, template) bytes, each
+ * owned by the point whose copy it holds (its entry in the points array), filled by memory DMA
+ * one point ahead of its use. */
+#define D_JOB 0       /* BVB_DMA_JOB_BYTES: slot 0 the search area, slot 1 the template */
+#define D_X 112       /* struct bvb_dma_xfer */
+#define D_FLY 136     /* the point whose job is in flight, or 0 */
+#define D_FLYSET 140  /* its set, times 4 */
+#define D_OWN0 144    /* the point whose bytes set 0 holds (complete), or 0 */
+#define D_OWN1 148    /* set 1 */
+#define D_WANT 152    /* temporaries */
+#define D_WSET 156
+#define D_SET0 160    /* the search area (L x L bytes, L <= 27), then the template at +D_TPL */
+#define D_SET1 1016
+#define D_TPL 732
+#define D_BYTES 1872  /* = BVB_NCC_DMA_BYTES */
+
 #define MAX_RADIUS 5
 #define MAX_SEARCH 16
+
+#include "bvb/dma.h"
 
 	.section .l1.text, "ax"
 
@@ -180,6 +203,7 @@ _bvb_ncc_match_asm:
 	[p5 + CTX_SEEDX] = r0;
 	[p5 + CTX_SEEDY] = r0;
 	call _ncc_layout;
+	call _ncc_dlayout;
 .Lm_point:
 	r5 = [p5 + CTX_NLEFT];
 	cc = r5 <= 0;
@@ -187,6 +211,7 @@ _bvb_ncc_match_asm:
 	r5 += -1;
 	[p5 + CTX_NLEFT] = r5;
 	p4 = [p5 + CTX_PTS];
+	[p5 + CTX_CUR] = p4;
 	r0 = w[p4++] (x);
 	r1 = w[p4++] (x);
 	[p5 + CTX_PTS] = p4;
@@ -209,6 +234,22 @@ _bvb_ncc_match_asm:
 	r4 = [p5 + CTX_H];
 	cc = r3 < r4;
 	if !cc jump .Lm_border;
+	/* this point's bytes in L1, if a job brought them (waiting for it if it is in flight) */
+	r0 = 0;
+	[p5 + CTX_TSRC] = r0;
+	[p5 + CTX_BSRC] = r0;
+	r1 = [p5 + CTX_DMAP];
+	cc = r1 == 0;
+	if cc jump .Lm_tpl;
+	r0 = [p5 + CTX_CUR];
+	call _ncc_dfind;
+	cc = r0 == 0;
+	if cc jump .Lm_tpl;
+	[p5 + CTX_BSRC] = r0;
+	r1 = D_TPL (x);
+	r0 = r0 + r1;
+	[p5 + CTX_TSRC] = r0;
+.Lm_tpl:
 	call _ncc_template;
 	cc = r0 == 0;
 	if cc jump .Lm_flat;
@@ -277,7 +318,7 @@ _bvb_ncc_match_asm:
 .Lm_bad:
 	/* parameters out of range: every point gets BVB_NCC_BAD_PARAMS, the scratch is not used */
 	cc = r5 <= 0;
-	if cc jump .Lm_done;
+	if cc jump .Lm_ret;
 	r0 = 0;
 	r1 = 3;
 .Lm_bad1:
@@ -288,7 +329,14 @@ _bvb_ncc_match_asm:
 	r5 += -1;
 	cc = r5 <= 0;
 	if !cc jump .Lm_bad1;
+	jump .Lm_ret;
 .Lm_done:
+	/* every job started is waited for by the point it serves; this only makes sure */
+	r0 = [p5 + CTX_DMAP];
+	cc = r0 == 0;
+	if cc jump .Lm_ret;
+	call _ncc_dwait;
+.Lm_ret:
 	(r7:4, p5:3) = [sp++];
 	rets = [sp++];
 	rts;
@@ -415,6 +463,9 @@ _ncc_layout:
 	r0 = 0;
 	[p5 + CTX_PIPE] = r0;
 	[p5 + CTX_PRE] = r0;
+	[p5 + CTX_DMAP] = r0;
+	[p5 + CTX_TSRC] = r0;
+	[p5 + CTX_BSRC] = r0;
 	r3 = [p5 + CTX_R];
 	r4 = [p5 + CTX_S];
 	r0 = 5;
@@ -524,36 +575,96 @@ _ncc_layout:
 
 
 /* ------------------------------------------------------------------------------------------- */
-/* The copy program for the next point that is inside the frame, if any: two chunks of CHUNK
- * pixels per row of its search area ([0, CHUNK) and [L - CHUNK, L), overlapping), each a
- * (source, He destination, Ho destination) triple for the spare buffers. Sets CTX_PRE. */
+/* The first of the R5 points from entry P0 on whose search area lies in the frame: R0 = its
+ * entry, or 0. Clobbers R0-R3, R5-R7, P0. */
 	.align 4
-_ncc_prebuild:
-	r5 = [p5 + CTX_NLEFT];
+_ncc_nextin:
+	r0 = 0;
 	cc = r5 <= 0;
-	if cc jump .Lpb_none;
-	p0 = [p5 + CTX_PTS];
+	if cc jump .Lni_out;
 	r2 = [p5 + CTX_R];
 	r3 = [p5 + CTX_S];
 	r2 = r2 + r3;        /* r + s */
 	r6 = [p5 + CTX_W];
 	r7 = [p5 + CTX_H];
-.Lpb_scan:
+.Lni_scan:
 	r0 = w[p0++] (x);
 	r1 = w[p0++] (x);
 	r3 = r0 - r2;
 	cc = r3 < 0;
-	if cc jump .Lpb_next;
+	if cc jump .Lni_next;
 	r3 = r1 - r2;
 	cc = r3 < 0;
-	if cc jump .Lpb_next;
+	if cc jump .Lni_next;
 	r3 = r0 + r2;
 	cc = r3 < r6;
-	if !cc jump .Lpb_next;
+	if !cc jump .Lni_next;
 	r3 = r1 + r2;
 	cc = r3 < r7;
-	if !cc jump .Lpb_next;
-	/* found: six running pointers (source, He, Ho for both chunks), one store and one add a cycle */
+	if !cc jump .Lni_next;
+	r0 = p0;
+	r0 += -4;
+	rts;
+.Lni_next:
+	r5 += -1;
+	cc = r5 <= 0;
+	if !cc jump .Lni_scan (bp);
+	r0 = 0;
+.Lni_out:
+	rts;
+
+/* ------------------------------------------------------------------------------------------- */
+/* The copy program for the next point that is inside the frame, if any: two chunks of CHUNK
+ * pixels per row of its search area ([0, CHUNK) and [L - CHUNK, L), overlapping), each a
+ * (source, He destination, Ho destination) triple for the spare buffers. Sets CTX_PRE.
+ * With memory DMA the source is that point's copy in L1 (its job, started during the last MAC
+ * pass, is waited for here), and the job for the in-frame point after it starts here, into the
+ * other set, so that it runs during this MAC pass. */
+	.align 4
+_ncc_prebuild:
+	[--sp] = rets;
+	r5 = [p5 + CTX_NLEFT];
+	p0 = [p5 + CTX_PTS];
+	call _ncc_nextin;
+	cc = r0 == 0;
+	if cc jump .Lpb_none;
+	[p5 + CTX_T17] = r0; /* the next point */
+	[p5 + CTX_T18] = r5; /* points left from it on */
+	r1 = 0;
+	[p5 + CTX_T19] = r1; /* its search area in L1, or 0 */
+	r1 = [p5 + CTX_DMAP];
+	cc = r1 == 0;
+	if cc jump .Lpb_prog;
+	call _ncc_dfind;
+	[p5 + CTX_T19] = r0;
+	r1 = [p5 + CTX_DMAP];
+	cc = r1 == 0;
+	if cc jump .Lpb_prog;
+	r2 = D_SET0;
+	r1 = r1 + r2;
+	cc = r0 == r1;
+	r0 = cc;             /* the set the next point does not use */
+	[p5 + CTX_T16] = r0;
+	p0 = [p5 + CTX_T17];
+	p0 += 4;
+	r5 = [p5 + CTX_T18];
+	r5 += -1;
+	call _ncc_nextin;
+	cc = r0 == 0;
+	if cc jump .Lpb_prog;
+	r1 = [p5 + CTX_T16];
+	call _ncc_dstart;
+.Lpb_prog:
+	p0 = [p5 + CTX_T17];
+	r0 = w[p0] (x);
+	r1 = w[p0 + 2] (x);
+	r2 = [p5 + CTX_R];
+	r3 = [p5 + CTX_S];
+	r2 = r2 + r3;        /* r + s */
+	/* six running pointers (source, He, Ho for both chunks), one store and one add a cycle */
+	r3 = [p5 + CTX_T19];
+	cc = r3 == 0;
+	if !cc jump .Lpb_l1;
 	r1 = r1 - r2;
 	r3 = [p5 + CTX_STRIDE];
 	r1 *= r3;
@@ -561,6 +672,11 @@ _ncc_prebuild:
 	r0 = r0 + r1;
 	r1 = [p5 + CTX_FRAME2];
 	r0 = r0 + r1;        /* source, row 0 */
+	jump .Lpb_go;
+.Lpb_l1:
+	r0 = r3;             /* rows of L bytes */
+	r3 = [p5 + CTX_L];
+.Lpb_go:
 	r1 = [p5 + CTX_HE2];
 	r2 = [p5 + CTX_HO2];
 	r2 += -2;            /* pixel c of a row at +2c in both */
@@ -585,12 +701,258 @@ _ncc_prebuild:
 	r5 = r5 + r6 (ns) || [p0++] = r4 || nop;
 	r0 = 1;
 	[p5 + CTX_PRE] = r0;
-	rts;
-.Lpb_next:
-	r5 += -1;
-	cc = r5 <= 0;
-	if !cc jump .Lpb_scan (bp);
 .Lpb_none:
+	rets = [sp++];
+	rts;
+
+/* ------------------------------------------------------------------------------------------- */
+/* Memory DMA (bvb/dma.h) of each point's search area and template into L1, one point ahead.
+ * _ncc_dlayout: on for the banked layout with both frames wholly in SDRAM and the DMA area
+ * reachable by DMA (not the scratchpad), and both slots prepared (8-bit elements: L and w are
+ * odd, so every later move keeps the shape); else CTX_DMAP stays 0 and the frames are read
+ * through the cache as before. Clobbers R0-R7, P0-P2, P4. */
+	.align 4
+_ncc_dlayout:
+	[--sp] = rets;
+	r0 = [p5 + CTX_R];
+	r1 = 5;
+	cc = r0 == r1;
+	if !cc jump .Ldl_out;
+	r0 = [p5 + CTX_S];
+	cc = r0 < r1;
+	if cc jump .Ldl_out;
+	r1 = 8;
+	cc = r1 < r0;
+	if cc jump .Ldl_out;
+	r4 = [p5 + CTX_H];
+	r5 = [p5 + CTX_W];
+	r1 = 1;
+	cc = r4 < r1;
+	if cc jump .Ldl_out;
+	cc = r5 < r1;
+	if cc jump .Ldl_out;
+	r4 += -1;
+	r0 = [p5 + CTX_STRIDE];
+	r4 *= r0;
+	r4 = r4 + r5;        /* a frame's extent */
+	r6.l = 0;
+	r6.h = 0x0200;       /* the end of SDRAM */
+	r0 = [p5 + CTX_FRAME1];
+	r1 = r0 + r4;
+	cc = r1 < r0 (iu);
+	if cc jump .Ldl_out;
+	cc = r6 < r1 (iu);
+	if cc jump .Ldl_out;
+	r0 = [p5 + CTX_FRAME2];
+	r1 = r0 + r4;
+	cc = r1 < r0 (iu);
+	if cc jump .Ldl_out;
+	cc = r6 < r1 (iu);
+	if cc jump .Ldl_out;
+	/* the area: after NQ2's (L+1) columns of 2*KSB bytes and its two spare words */
+	r0 = [p5 + CTX_L];
+	r0 += 1;
+	r1 = [p5 + CTX_KSB];
+	r0 *= r1;
+	r0 = r0 << 1;
+	r1 = [p5 + CTX_NQ2];
+	r0 = r0 + r1;
+	r0 += 8;
+	r7 = r0;
+	r1 = D_BYTES (x);
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ldl_out;
+	p4 = r7;
+	r0 = 0;
+	[p4 + D_FLY] = r0;
+	[p4 + D_FLYSET] = r0;
+	[p4 + D_OWN0] = r0;
+	[p4 + D_OWN1] = r0;
+	/* slot 0: L rows of L bytes of frame 2 into a set; slot 1: w rows of w bytes of frame 1 */
+	r0 = [p5 + CTX_FRAME2];
+	[p4 + D_X + DMAX_SRC] = r0;
+	r0 = [p5 + CTX_STRIDE];
+	[p4 + D_X + DMAX_SS] = r0;
+	r1 = D_SET0;
+	r0 = r7 + r1;
+	[p4 + D_X + DMAX_DST] = r0;
+	r0 = [p5 + CTX_L];
+	[p4 + D_X + DMAX_DS] = r0;
+	[p4 + D_X + DMAX_W] = r0;
+	[p4 + D_X + DMAX_ROWS] = r0;
+	r0 = r7;
+	r1 = 0;
+	r2 = D_X;
+	r2 = r2 + r7;
+	call _bvb_dma_prepare;
+	cc = r0 < 0;
+	if cc jump .Ldl_out;
+	r0 = [p5 + CTX_FRAME1];
+	[p4 + D_X + DMAX_SRC] = r0;
+	r1 = D_SET0 + D_TPL (x);
+	r0 = r7 + r1;
+	[p4 + D_X + DMAX_DST] = r0;
+	r0 = [p5 + CTX_WT];
+	[p4 + D_X + DMAX_DS] = r0;
+	[p4 + D_X + DMAX_W] = r0;
+	[p4 + D_X + DMAX_ROWS] = r0;
+	r0 = r7;
+	r1 = 1;
+	r2 = D_X;
+	r2 = r2 + r7;
+	call _bvb_dma_prepare;
+	cc = r0 < 0;
+	if cc jump .Ldl_out;
+	[p5 + CTX_DMAP] = r7;
+.Ldl_out:
+	rets = [sp++];
+	rts;
+
+/* _ncc_dwait: waits for the job in flight, if any, and records its set as holding its point's
+ * bytes; on a DMA error memory DMA is off for the rest of the call (CTX_DMAP = 0). CTX_DMAP
+ * must be set. Clobbers R0-R3, P0-P2, P4. */
+	.align 4
+_ncc_dwait:
+	p4 = [p5 + CTX_DMAP];
+	r0 = [p4 + D_FLY];
+	cc = r0 == 0;
+	if cc jump .Ldw_out;
+	[--sp] = rets;
+	call _bvb_dma_wait;
+	rets = [sp++];
+	r1 = [p4 + D_FLY];
+	r2 = 0;
+	[p4 + D_FLY] = r2;
+	cc = r0 == 0;
+	if !cc jump .Ldw_err;
+	r0 = [p4 + D_FLYSET];
+	p0 = r0;
+	p0 = p4 + p0;
+	[p0 + D_OWN0] = r1;
+.Ldw_out:
+	rts;
+.Ldw_err:
+	[p5 + CTX_DMAP] = r2;
+	rts;
+
+/* _ncc_dfind: R0 = a point's entry; R0 = the start of the set holding its bytes (search area,
+ * template at +D_TPL), or 0. Waits for its job if that is in flight. CTX_DMAP must be set.
+ * Clobbers R0-R3, P0-P2, P4. */
+	.align 4
+_ncc_dfind:
+	p4 = [p5 + CTX_DMAP];
+	r1 = [p4 + D_FLY];
+	cc = r0 == r1;
+	if !cc jump .Ldf_look;
+	[p4 + D_WANT] = r0;
+	[--sp] = rets;
+	call _ncc_dwait;
+	rets = [sp++];
+	r1 = [p5 + CTX_DMAP];
+	cc = r1 == 0;
+	if cc jump .Ldf_none;
+	r0 = [p4 + D_WANT];
+.Ldf_look:
+	r1 = [p4 + D_OWN0];
+	cc = r0 == r1;
+	if cc jump .Ldf_0;
+	r1 = [p4 + D_OWN1];
+	cc = r0 == r1;
+	if cc jump .Ldf_1;
+.Ldf_none:
+	r0 = 0;
+	rts;
+.Ldf_0:
+	r0 = p4;
+	r1 = D_SET0;
+	r0 = r0 + r1;
+	rts;
+.Ldf_1:
+	r0 = p4;
+	r1 = D_SET1 (x);
+	r0 = r0 + r1;
+	rts;
+
+/* _ncc_dstart: R0 = a point's entry (inside the frame), R1 = a set (0, 1): starts the job that
+ * copies its search area and template into that set (after the job in flight, if any). CTX_DMAP
+ * must be set. Clobbers R0-R3, P0-P2, P4. */
+	.align 4
+_ncc_dstart:
+	[--sp] = rets;
+	[--sp] = r0;
+	p4 = [p5 + CTX_DMAP];
+	r1 = r1 << 2;
+	[p4 + D_WSET] = r1;
+	call _ncc_dwait;
+	r0 = [sp];
+	[p4 + D_WANT] = r0;
+	r0 = [p5 + CTX_DMAP];
+	cc = r0 == 0;
+	if cc jump .Lds_out;
+	r1 = [p4 + D_WSET];
+	p0 = r1;
+	p0 = p4 + p0;
+	r2 = 0;
+	[p0 + D_OWN0] = r2;  /* the set's bytes are about to change */
+	r2 = D_SET0;
+	cc = r1 == 0;
+	if cc jump .Lds_set;
+	r2 = D_SET1 (x);
+.Lds_set:
+	r0 = p4;
+	r2 = r2 + r0;        /* the set */
+	r0 = r2;
+	r1 = D_TPL (x);
+	r0 = r0 + r1;
+	[p4 + D_X + DMAX_DST] = r0;
+	[--sp] = r2;
+	/* the template: frame 1 at (x - r, y - r) */
+	p0 = [p4 + D_WANT];
+	r0 = w[p0] (x);
+	r1 = w[p0 + 2] (x);
+	r2 = [p5 + CTX_R];
+	r0 = r0 - r2;
+	r1 = r1 - r2;
+	r2 = [p5 + CTX_STRIDE];
+	r1 *= r2;
+	r0 = r0 + r1;
+	r1 = [p5 + CTX_FRAME1];
+	r1 = r1 + r0;
+	[p4 + D_X + DMAX_SRC] = r1;
+	r1 = [p5 + CTX_S];
+	r2 *= r1;
+	r0 = r0 - r1;
+	r0 = r0 - r2;        /* (x - r - s, y - r - s) */
+	r1 = [p5 + CTX_FRAME2];
+	r0 = r0 + r1;
+	[p4 + D_WANT] = r0;  /* the search area's source */
+	r0 = p4;
+	r1 = 1;
+	r2 = p4;
+	r3 = D_X;
+	r2 = r2 + r3;
+	call _bvb_dma_move;
+	r0 = [p4 + D_WANT];
+	[p4 + D_X + DMAX_SRC] = r0;
+	r0 = [sp++];
+	[p4 + D_X + DMAX_DST] = r0;
+	r0 = p4;
+	r1 = 0;
+	r2 = p4;
+	r3 = D_X;
+	r2 = r2 + r3;
+	call _bvb_dma_move;
+	r0 = p4;
+	r1 = 2;
+	call _bvb_dma_start;
+	r0 = [p4 + D_WSET];
+	[p4 + D_FLYSET] = r0;
+	r0 = [sp];
+	[p4 + D_FLY] = r0;
+.Lds_out:
+	r0 = [sp++];
+	rets = [sp++];
 	rts;
 
 /* ------------------------------------------------------------------------------------------- */
@@ -611,6 +973,12 @@ _ncc_template:
 	p0 = [p5 + CTX_FRAME1];
 	p1 = r0;
 	p0 = p0 + p1;        /* top left of the template */
+	r1 = [p5 + CTX_TSRC];
+	cc = r1 == 0;
+	if cc jump .Lt_src;
+	p0 = r1;             /* its copy in L1, rows of w bytes */
+	r2 = [p5 + CTX_WT];
+.Lt_src:
 	p2 = p0;
 	r4 = [p5 + CTX_WT];
 	p3 = r4;
@@ -689,6 +1057,12 @@ _ncc_build:
 	p1 = r0;
 	p0 = p0 + p1;
 	r5 = [p5 + CTX_L];
+	r0 = [p5 + CTX_BSRC];
+	cc = r0 == 0;
+	if cc jump .Lb_src;
+	p0 = r0;             /* its copy in L1, rows of L bytes */
+	r3 = r5;
+.Lb_src:
 	r0 = r3 - r5;
 	p1 = r0;             /* stride - L */
 	p2 = [p5 + CTX_HE];
