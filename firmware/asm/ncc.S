@@ -204,6 +204,34 @@ _bvb_ncc_match_asm:
 	[p5 + CTX_SEEDY] = r0;
 	call _ncc_layout;
 	call _ncc_dlayout;
+	/* with memory DMA: the first point's bytes now (waited for), and the next point's job
+	 * during the first point's passes */
+	p4 = [p5 + CTX_DMAP];
+	r5 = [p5 + CTX_NLEFT];
+	p0 = [p5 + CTX_PTS];
+	r0 = p4;
+	cc = r0 == 0;
+	if cc jump .Lm_point;
+	call _ncc_nextin;
+	cc = r0 == 0;
+	if cc jump .Lm_point;
+	[p5 + CTX_T17] = r0;
+	[p5 + CTX_T18] = r5;
+	r1 = 0;
+	call _ncc_dstart;
+	call _ncc_dwait;
+	r0 = [p5 + CTX_DMAP];
+	cc = r0 == 0;
+	if cc jump .Lm_point;
+	p0 = [p5 + CTX_T17];
+	p0 += 4;
+	r5 = [p5 + CTX_T18];
+	r5 += -1;
+	call _ncc_nextin;
+	cc = r0 == 0;
+	if cc jump .Lm_point;
+	r1 = 1;
+	call _ncc_dstart;
 .Lm_point:
 	r5 = [p5 + CTX_NLEFT];
 	cc = r5 <= 0;
@@ -238,10 +266,11 @@ _bvb_ncc_match_asm:
 	r0 = 0;
 	[p5 + CTX_TSRC] = r0;
 	[p5 + CTX_BSRC] = r0;
-	r1 = [p5 + CTX_DMAP];
+	p4 = [p5 + CTX_DMAP];
+	r0 = [p5 + CTX_CUR];
+	r1 = p4;
 	cc = r1 == 0;
 	if cc jump .Lm_tpl;
-	r0 = [p5 + CTX_CUR];
 	call _ncc_dfind;
 	cc = r0 == 0;
 	if cc jump .Lm_tpl;
@@ -332,7 +361,10 @@ _bvb_ncc_match_asm:
 	jump .Lm_ret;
 .Lm_done:
 	/* every job started is waited for by the point it serves; this only makes sure */
-	r0 = [p5 + CTX_DMAP];
+	p4 = [p5 + CTX_DMAP];
+	nop;
+	nop;
+	r0 = p4;
 	cc = r0 == 0;
 	if cc jump .Lm_ret;
 	call _ncc_dwait;
@@ -632,6 +664,7 @@ _ncc_prebuild:
 	[p5 + CTX_T18] = r5; /* points left from it on */
 	r1 = 0;
 	[p5 + CTX_T19] = r1; /* its search area in L1, or 0 */
+	p4 = [p5 + CTX_DMAP];
 	r1 = [p5 + CTX_DMAP];
 	cc = r1 == 0;
 	if cc jump .Lpb_prog;
@@ -646,9 +679,9 @@ _ncc_prebuild:
 	r0 = cc;             /* the set the next point does not use */
 	[p5 + CTX_T16] = r0;
 	p0 = [p5 + CTX_T17];
-	p0 += 4;
 	r5 = [p5 + CTX_T18];
 	r5 += -1;
+	p0 += 4;
 	call _ncc_nextin;
 	cc = r0 == 0;
 	if cc jump .Lpb_prog;
@@ -656,11 +689,11 @@ _ncc_prebuild:
 	call _ncc_dstart;
 .Lpb_prog:
 	p0 = [p5 + CTX_T17];
-	r0 = w[p0] (x);
-	r1 = w[p0 + 2] (x);
 	r2 = [p5 + CTX_R];
 	r3 = [p5 + CTX_S];
 	r2 = r2 + r3;        /* r + s */
+	r0 = w[p0] (x);
+	r1 = w[p0 + 2] (x);
 	/* six running pointers (source, He, Ho for both chunks), one store and one add a cycle */
 	r3 = [p5 + CTX_T19];
 	cc = r3 == 0;
@@ -810,11 +843,10 @@ _ncc_dlayout:
 	rts;
 
 /* _ncc_dwait: waits for the job in flight, if any, and records its set as holding its point's
- * bytes; on a DMA error memory DMA is off for the rest of the call (CTX_DMAP = 0). CTX_DMAP
- * must be set. Clobbers R0-R3, P0-P2, P4. */
+ * bytes; on a DMA error memory DMA is off for the rest of the call (CTX_DMAP = 0). P4 =
+ * CTX_DMAP (not 0). Clobbers R0-R3, P0-P2. */
 	.align 4
 _ncc_dwait:
-	p4 = [p5 + CTX_DMAP];
 	r0 = [p4 + D_FLY];
 	cc = r0 == 0;
 	if cc jump .Ldw_out;
@@ -827,9 +859,12 @@ _ncc_dwait:
 	cc = r0 == 0;
 	if !cc jump .Ldw_err;
 	r0 = [p4 + D_FLYSET];
-	p0 = r0;
-	p0 = p4 + p0;
-	[p0 + D_OWN0] = r1;
+	cc = r0 == 0;
+	if !cc jump .Ldw_1;
+	[p4 + D_OWN0] = r1;
+	rts;
+.Ldw_1:
+	[p4 + D_OWN1] = r1;
 .Ldw_out:
 	rts;
 .Ldw_err:
@@ -837,11 +872,10 @@ _ncc_dwait:
 	rts;
 
 /* _ncc_dfind: R0 = a point's entry; R0 = the start of the set holding its bytes (search area,
- * template at +D_TPL), or 0. Waits for its job if that is in flight. CTX_DMAP must be set.
- * Clobbers R0-R3, P0-P2, P4. */
+ * template at +D_TPL), or 0. Waits for its job if that is in flight. P4 = CTX_DMAP (not 0).
+ * Clobbers R0-R3, P0-P2. */
 	.align 4
 _ncc_dfind:
-	p4 = [p5 + CTX_DMAP];
 	r1 = [p4 + D_FLY];
 	cc = r0 == r1;
 	if !cc jump .Ldf_look;
@@ -875,13 +909,12 @@ _ncc_dfind:
 	rts;
 
 /* _ncc_dstart: R0 = a point's entry (inside the frame), R1 = a set (0, 1): starts the job that
- * copies its search area and template into that set (after the job in flight, if any). CTX_DMAP
- * must be set. Clobbers R0-R3, P0-P2, P4. */
+ * copies its search area and template into that set (after the job in flight, if any). P4 =
+ * CTX_DMAP (not 0). Clobbers R0-R3, P0-P2. */
 	.align 4
 _ncc_dstart:
 	[--sp] = rets;
 	[--sp] = r0;
-	p4 = [p5 + CTX_DMAP];
 	r1 = r1 << 2;
 	[p4 + D_WSET] = r1;
 	call _ncc_dwait;
@@ -891,13 +924,14 @@ _ncc_dstart:
 	cc = r0 == 0;
 	if cc jump .Lds_out;
 	r1 = [p4 + D_WSET];
-	p0 = r1;
-	p0 = p4 + p0;
-	r2 = 0;
-	[p0 + D_OWN0] = r2;  /* the set's bytes are about to change */
+	r0 = 0;
 	r2 = D_SET0;
 	cc = r1 == 0;
-	if cc jump .Lds_set;
+	if !cc jump .Lds_1;
+	[p4 + D_OWN0] = r0;  /* the set's bytes are about to change */
+	jump .Lds_set;
+.Lds_1:
+	[p4 + D_OWN1] = r0;
 	r2 = D_SET1 (x);
 .Lds_set:
 	r0 = p4;
