@@ -3,21 +3,37 @@
  * Cycles (bfbench bench: 32 points on a grid, r = 5 (11x11), s = 8 (289 candidates each), frame 2
  * = frame 1 (uniform noise) moved by (3, -2) plus noise; frames in SDRAM, scratch in L1 bank A).
  * Modelled BF537 cycles (--timing bf537) per call:
- *   160x120: 789,535 = 85.4 per candidate; 320x240: 837,089 = 90.5 (bound 60.5).
- *   Where they go at 160x120 (the same call with one charge of the model turned off): 725,345
- *   issued (the simulator's own count, 78.4 per candidate, below), ~56,000 SDRAM line fills of
- *   the frames (the template and the search area of each point, through the data cache; 320x240
- *   pays more of them), 6,678 sub-bank collisions (most of them the selection sweep, 145 a
- *   point: it loads both numerators of a pair, one 8-byte record, in one issue), ~1,400
- *   address-register stalls (per point set-up). With the banked scratch layout (bvb/ncc.h) the
- *   MAC pass, passes 1 and 2 and the copy program make no same-sub-bank dual access (in one
- *   sub-bank, T' against the search area's copies costs a cycle every other MAC). Bringing each
- *   point's search area into L1 by DMA during the previous point, instead of the copy program's
- *   byte loads through the cache, would take off the line fills: ~79 per candidate (an
- *   estimate, 85.4 less the fills' 6.1, if the DMA cost the core nothing).
- * Simulator cycles per call (--timing none, data as if in L1):
- *   160x120: 725,345 = 78.4 per candidate (C at -O2: 14,228,829 = 1538.6, 19.6x);
- *   320x240 and 640x480: 78.5 per candidate (the work does not depend on the frame size).
+ *   160x120: 754,108 = 81.5 per candidate; 320x240: 754,305 = 81.6; 640x480: 754,815 (bound
+ *   60.5; the issue's target is 80). Before memory DMA: 789,535 = 85.4 and 837,089 = 90.5.
+ *   With memory DMA (below) no point's pixels are read through the data cache, so the count no
+ *   longer depends on the frame size. Where the 754,108 go at 160x120 (from the model's
+ *   per-cause totals, --timing-report, of the bench's run with this code against the one
+ *   before memory DMA, which also count the harness's own work: the split is an estimate
+ *   where marked ~): ~725,000 issued for the work itself (as before, 78.4
+ *   per candidate), ~14,000 issued for memory DMA (~440 a point: the DMA helper's move, start
+ *   and wait, ~150, and the job bookkeeping here, finding the point after next, owners of
+ *   the two sets, ~290 with calls and taken branches), ~3,500 waiting for the first point's
+ *   job (its 850 bytes at 8-bit elements; every later job is over before it is waited for),
+ *   6,678 sub-bank collisions (most of them the selection sweep, 145 a point: it loads both
+ *   numerators of a pair, one 8-byte record, in one issue), ~190 system MMR accesses at 8
+ *   cycles (DMA start and wait), ~2,000 address-register stalls (per point set-up), and what
+ *   still goes through the cache (the points and results arrays). With the banked scratch
+ *   layout (bvb/ncc.h) the MAC pass, passes 1 and 2 and the copy program make no same-sub-bank
+ *   dual access (in one sub-bank, T' against the search area's copies costs a cycle every
+ *   other MAC). What is left to reach 80: the sweep's collisions (split each numerator record
+ *   over two sub-banks, or load the lanes in different cycles, 2 pairs in 6 issues: ~4,500)
+ *   and the DMA bookkeeping (the point after next found once, not twice; fewer calls).
+ * Memory DMA (r = 5, 5 <= s <= 8, both frames in SDRAM, the scratch where DMA reaches; else the
+ *   frames are read in place through the cache as before): a job of two transfers per point
+ *   (bvb/dma.h) brings its L x L search area of frame 2 and its w x w template of frame 1 into
+ *   one of two sets of byte buffers in the scratch's fourth sub-bank. The job for the point
+ *   after next is started just before this point's MAC pass (which copies the next point's
+ *   bytes, already in L1, into the spare He, Ho), into the set the next point does not use,
+ *   and waited for before the next MAC pass: ~3,500 cycles of DMA under ~18,000 of MACs. The
+ *   first point's job is waited for at once, the second's runs during the first's passes.
+ * Simulator cycles per call (--timing none): 740,547 at 160x120 (the simulator's untimed DMA
+ *   is waited for by polling; before memory DMA 725,345 = 78.4 per candidate); C at -O2:
+ *   14,228,829 = 1538.6 per candidate.
  * Lower bound: a candidate is 121 multiply-accumulates and the two MAC units do two a cycle, so
  * 60.5 cycles per candidate (its loads, 121 data words and 61 template words per pair of
  * candidates, fit in the same cycles). The MAC pass runs at that bound for the candidate pairs
@@ -30,11 +46,13 @@
  * template at many offsets, and each of those costs an exact comparison (~200 cycles): on the
  * Middlebury pairs (RubberWhale, Grove2, Urban2, Dimetrodon, Hydrangea; 48 points, r = 5, s = 8)
  * 256 to 391 cycles per candidate, 4 to 6 times faster than the C reference there.
- * ncc_scoremap (one point, every candidate scored exactly): 166,822 modelled cycles at 160x120
- * (577 per score), 179,697 at 320x240; 164,439 issued, ~400 address-register stalls (one a
- * candidate in _ncc_exactv), no collisions, the rest SDRAM.
- * Working set: the scratch buffer, 13.1 KB for r = 5, s = 8 (L1 data bank A in the bench, frames
- * in SDRAM, read once per point: a byte per pixel of the search area and of the template). The
+ * ncc_scoremap (one point, every candidate scored exactly): 166,765 modelled cycles at 160x120
+ * (577 per score), 179,722 at 320x240; 164,464 issued, ~400 address-register stalls (one a
+ * candidate in _ncc_exactv), no collisions, the rest SDRAM. It reads its one point through the
+ * cache: memory DMA would wait ~3,500 cycles for it against ~2,300 of line fills at 160x120
+ * (~15,000 at 320x240), so it is not used there.
+ * Working set: the scratch buffer, 14.9 KB for r = 5, s = 8 (L1 data bank A in the bench, frames
+ * in SDRAM, read once per point by DMA: a byte per pixel of the search area and of the template). The
  * copy program's P-register loads are used as addresses 6 cycles later (no stall).
  *
  * Per point the work is split into passes over the scratch buffer:
@@ -148,10 +166,13 @@
 #define D_OWN1 148    /* set 1 */
 #define D_WANT 152    /* temporaries */
 #define D_WSET 156
-#define D_SET0 160    /* the search area (L x L bytes, L <= 27), then the template at +D_TPL */
-#define D_SET1 1016
+#define D_AFTER 160   /* the next point inside the frame after this entry is */
+#define D_NEXT 164    /* this one (0: none), */
+#define D_NLEFT 168   /* with this many points left from it on */
+#define D_SET0 176    /* the search area (L x L bytes, L <= 27), then the template at +D_TPL */
+#define D_SET1 1032
 #define D_TPL 732
-#define D_BYTES 1872  /* = BVB_NCC_DMA_BYTES */
+#define D_BYTES 1888  /* = BVB_NCC_DMA_BYTES */
 
 #define MAX_RADIUS 5
 #define MAX_SEARCH 16
@@ -655,16 +676,29 @@ _ncc_nextin:
 	.align 4
 _ncc_prebuild:
 	[--sp] = rets;
+	p4 = [p5 + CTX_DMAP];
 	r5 = [p5 + CTX_NLEFT];
 	p0 = [p5 + CTX_PTS];
+	r0 = p4;
+	cc = r0 == 0;
+	if cc jump .Lpb_scan;
+	/* the next point: the last prebuild found it if it ran for the point before */
+	r0 = [p4 + D_AFTER];
+	r1 = [p5 + CTX_CUR];
+	cc = r0 == r1;
+	if !cc jump .Lpb_scan;
+	r0 = [p4 + D_NEXT];
+	r5 = [p4 + D_NLEFT];
+	jump .Lpb_have;
+.Lpb_scan:
 	call _ncc_nextin;
+.Lpb_have:
 	cc = r0 == 0;
 	if cc jump .Lpb_none;
 	[p5 + CTX_T17] = r0; /* the next point */
 	[p5 + CTX_T18] = r5; /* points left from it on */
 	r1 = 0;
 	[p5 + CTX_T19] = r1; /* its search area in L1, or 0 */
-	p4 = [p5 + CTX_DMAP];
 	r1 = [p5 + CTX_DMAP];
 	cc = r1 == 0;
 	if cc jump .Lpb_prog;
@@ -683,6 +717,10 @@ _ncc_prebuild:
 	r5 += -1;
 	p0 += 4;
 	call _ncc_nextin;
+	r1 = [p5 + CTX_T17];
+	[p4 + D_AFTER] = r1;
+	[p4 + D_NEXT] = r0;
+	[p4 + D_NLEFT] = r5;
 	cc = r0 == 0;
 	if cc jump .Lpb_prog;
 	r1 = [p5 + CTX_T16];
@@ -802,6 +840,7 @@ _ncc_dlayout:
 	[p4 + D_FLYSET] = r0;
 	[p4 + D_OWN0] = r0;
 	[p4 + D_OWN1] = r0;
+	[p4 + D_AFTER] = r0;
 	/* slot 0: L rows of L bytes of frame 2 into a set; slot 1: w rows of w bytes of frame 1 */
 	r0 = [p5 + CTX_FRAME2];
 	[p4 + D_X + DMAX_SRC] = r0;
@@ -917,12 +956,16 @@ _ncc_dstart:
 	[--sp] = r0;
 	r1 = r1 << 2;
 	[p4 + D_WSET] = r1;
+	r0 = [p4 + D_FLY];
+	cc = r0 == 0;
+	if cc jump .Lds_idle;
 	call _ncc_dwait;
-	r0 = [sp];
-	[p4 + D_WANT] = r0;
 	r0 = [p5 + CTX_DMAP];
 	cc = r0 == 0;
 	if cc jump .Lds_out;
+.Lds_idle:
+	r0 = [sp];
+	[p4 + D_WANT] = r0;
 	r1 = [p4 + D_WSET];
 	r0 = 0;
 	r2 = D_SET0;
