@@ -735,16 +735,7 @@ _ncc_prebuild:
 	/* six running pointers (source, He, Ho for both chunks), one store and one add a cycle */
 	r3 = [p5 + CTX_T19];
 	cc = r3 == 0;
-	if !cc jump .Lpb_l1;
-	r1 = r1 - r2;
-	r3 = [p5 + CTX_STRIDE];
-	r1 *= r3;
-	r0 = r0 - r2;
-	r0 = r0 + r1;
-	r1 = [p5 + CTX_FRAME2];
-	r0 = r0 + r1;        /* source, row 0 */
-	jump .Lpb_go;
-.Lpb_l1:
+	if cc jump .Lpb_frame;
 	r0 = r3;             /* rows of L bytes */
 	r3 = [p5 + CTX_L];
 .Lpb_go:
@@ -775,6 +766,15 @@ _ncc_prebuild:
 .Lpb_none:
 	rets = [sp++];
 	rts;
+.Lpb_frame:
+	r1 = r1 - r2;
+	r3 = [p5 + CTX_STRIDE];
+	r1 *= r3;
+	r0 = r0 - r2;
+	r0 = r0 + r1;
+	r1 = [p5 + CTX_FRAME2];
+	r0 = r0 + r1;        /* source, row 0 */
+	jump .Lpb_go;
 
 /* ------------------------------------------------------------------------------------------- */
 /* Memory DMA (bvb/dma.h) of each point's search area and template into L1, one point ahead.
@@ -898,12 +898,13 @@ _ncc_dwait:
 	cc = r0 == 0;
 	if !cc jump .Ldw_err;
 	r0 = [p4 + D_FLYSET];
+	r2 = [p4 + D_OWN0];
+	r3 = [p4 + D_OWN1];
 	cc = r0 == 0;
-	if !cc jump .Ldw_1;
-	[p4 + D_OWN0] = r1;
-	rts;
-.Ldw_1:
-	[p4 + D_OWN1] = r1;
+	if cc r2 = r1;
+	if !cc r3 = r1;
+	[p4 + D_OWN0] = r2;
+	[p4 + D_OWN1] = r3;
 .Ldw_out:
 	rts;
 .Ldw_err:
@@ -927,24 +928,23 @@ _ncc_dfind:
 	if cc jump .Ldf_none;
 	r0 = [p4 + D_WANT];
 .Ldf_look:
+	/* without branches (a taken one costs 9 cycles unhinted): the set's offset, or 0 */
 	r1 = [p4 + D_OWN0];
+	r2 = [p4 + D_OWN1];
+	cc = r0 == r2;
+	r2 = D_SET1 (x);
+	r3 = 0;
+	if cc r3 = r2;
 	cc = r0 == r1;
-	if cc jump .Ldf_0;
-	r1 = [p4 + D_OWN1];
-	cc = r0 == r1;
-	if cc jump .Ldf_1;
+	r2 = D_SET0;
+	if cc r3 = r2;
+	r0 = p4;
+	r0 = r0 + r3;
+	cc = r3 == 0;
+	if cc r0 = r3;
+	rts;
 .Ldf_none:
 	r0 = 0;
-	rts;
-.Ldf_0:
-	r0 = p4;
-	r1 = D_SET0;
-	r0 = r0 + r1;
-	rts;
-.Ldf_1:
-	r0 = p4;
-	r1 = D_SET1 (x);
-	r0 = r0 + r1;
 	rts;
 
 /* _ncc_dstart: R0 = a point's entry (inside the frame), R1 = a set (0, 1): starts the job that
@@ -958,25 +958,23 @@ _ncc_dstart:
 	[p4 + D_WSET] = r1;
 	r0 = [p4 + D_FLY];
 	cc = r0 == 0;
-	if cc jump .Lds_idle;
-	call _ncc_dwait;
-	r0 = [p5 + CTX_DMAP];
-	cc = r0 == 0;
-	if cc jump .Lds_out;
+	if !cc jump .Lds_busy;
 .Lds_idle:
 	r0 = [sp];
 	[p4 + D_WANT] = r0;
+	/* the set's bytes are about to change: no owner */
 	r1 = [p4 + D_WSET];
 	r0 = 0;
-	r2 = D_SET0;
+	r2 = [p4 + D_OWN0];
+	r3 = [p4 + D_OWN1];
 	cc = r1 == 0;
-	if !cc jump .Lds_1;
-	[p4 + D_OWN0] = r0;  /* the set's bytes are about to change */
-	jump .Lds_set;
-.Lds_1:
-	[p4 + D_OWN1] = r0;
-	r2 = D_SET1 (x);
-.Lds_set:
+	if cc r2 = r0;
+	if !cc r3 = r0;
+	[p4 + D_OWN0] = r2;
+	[p4 + D_OWN1] = r3;
+	r2 = D_SET0;
+	r3 = D_SET1 (x);
+	if !cc r2 = r3;
 	r0 = p4;
 	r2 = r2 + r0;        /* the set */
 	r0 = r2;
@@ -1031,6 +1029,12 @@ _ncc_dstart:
 	r0 = [sp++];
 	rets = [sp++];
 	rts;
+.Lds_busy:
+	call _ncc_dwait;
+	r0 = [p5 + CTX_DMAP];
+	cc = r0 == 0;
+	if !cc jump .Lds_idle;
+	jump .Lds_out;
 
 /* ------------------------------------------------------------------------------------------- */
 /* Template: ST (ALU) and STT (MAC) in two cycles per pixel (one dual MAC cannot do both: its
