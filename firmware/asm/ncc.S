@@ -3,17 +3,18 @@
  * Cycles (bfbench bench: 32 points on a grid, r = 5 (11x11), s = 8 (289 candidates each), frame 2
  * = frame 1 (uniform noise) moved by (3, -2) plus noise; frames in SDRAM, scratch in L1 bank A).
  * Modelled BF537 cycles (--timing bf537) per call:
- *   160x120: 754,108 = 81.5 per candidate; 320x240: 754,305 = 81.6; 640x480: 754,815 (bound
+ *   160x120: 752,531 = 81.4 per candidate; 320x240: 752,728 = 81.4; 640x480: 753,238 (bound
  *   60.5; the issue's target is 80). Before memory DMA: 789,535 = 85.4 and 837,089 = 90.5.
  *   With memory DMA (below) no point's pixels are read through the data cache, so the count no
- *   longer depends on the frame size. Where the 754,108 go at 160x120 (from the model's
+ *   longer depends on the frame size. Where the 752,531 go at 160x120 (from the model's
  *   per-cause totals, --timing-report, of the bench's run with this code against the one
  *   before memory DMA, which also count the harness's own work: the split is an estimate
- *   where marked ~): ~725,000 issued for the work itself (as before, 78.4
- *   per candidate), ~14,000 issued for memory DMA (~440 a point: the DMA helper's move, start
- *   and wait, ~150, and the job bookkeeping here, finding the point after next, owners of
- *   the two sets, ~290 with calls and taken branches), ~3,500 waiting for the first point's
- *   job (its 850 bytes at 8-bit elements; every later job is over before it is waited for),
+ *   where marked ~): ~725,000 issued for the work itself (as before, 78.4 per candidate),
+ *   ~12,500 issued for memory DMA (~390 a point: the DMA helper's move, start and wait, ~150,
+ *   and the job bookkeeping here, finding the point after next and the owners of the two
+ *   sets, ~240 with calls, returns and taken branches at 5 cycles each), ~3,500 waiting for
+ *   the first point's job (850 bytes at 8-bit elements; every later job is over before it is
+ *   waited for),
  *   6,678 sub-bank collisions (most of them the selection sweep, 145 a point: it loads both
  *   numerators of a pair, one 8-byte record, in one issue), ~190 system MMR accesses at 8
  *   cycles (DMA start and wait), ~2,000 address-register stalls (per point set-up), and what
@@ -22,7 +23,7 @@
  *   dual access (in one sub-bank, T' against the search area's copies costs a cycle every
  *   other MAC). What is left to reach 80: the sweep's collisions (split each numerator record
  *   over two sub-banks, or load the lanes in different cycles, 2 pairs in 6 issues: ~4,500)
- *   and the DMA bookkeeping (the point after next found once, not twice; fewer calls).
+ *   and the DMA bookkeeping (fewer calls: inline the owner look-up and the job's sources).
  * Memory DMA (r = 5, 5 <= s <= 8, both frames in SDRAM, the scratch where DMA reaches; else the
  *   frames are read in place through the cache as before): a job of two transfers per point
  *   (bvb/dma.h) brings its L x L search area of frame 2 and its w x w template of frame 1 into
@@ -31,7 +32,7 @@
  *   bytes, already in L1, into the spare He, Ho), into the set the next point does not use,
  *   and waited for before the next MAC pass: ~3,500 cycles of DMA under ~18,000 of MACs. The
  *   first point's job is waited for at once, the second's runs during the first's passes.
- * Simulator cycles per call (--timing none): 740,547 at 160x120 (the simulator's untimed DMA
+ * Simulator cycles per call (--timing none): 738,970 at 160x120 (the simulator's untimed DMA
  *   is waited for by polling; before memory DMA 725,345 = 78.4 per candidate); C at -O2:
  *   14,228,829 = 1538.6 per candidate.
  * Lower bound: a candidate is 121 multiply-accumulates and the two MAC units do two a cycle, so
@@ -52,8 +53,8 @@
  * cache: memory DMA would wait ~3,500 cycles for it against ~2,300 of line fills at 160x120
  * (~15,000 at 320x240), so it is not used there.
  * Working set: the scratch buffer, 14.9 KB for r = 5, s = 8 (L1 data bank A in the bench, frames
- * in SDRAM, read once per point by DMA: a byte per pixel of the search area and of the template). The
- * copy program's P-register loads are used as addresses 6 cycles later (no stall).
+ * in SDRAM, read once per point by DMA: a byte per pixel of the search area and of the
+ * template). The copy program's P-register loads are used as addresses 6 cycles later (no stall).
  *
  * Per point the work is split into passes over the scratch buffer:
  *   template   T' = N*T - ST (16-bit), flat and with padded rows; vt = N*STT - ST^2
