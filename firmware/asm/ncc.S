@@ -3,21 +3,38 @@
  * Cycles (bfbench bench: 32 points on a grid, r = 5 (11x11), s = 8 (289 candidates each), frame 2
  * = frame 1 (uniform noise) moved by (3, -2) plus noise; frames in SDRAM, scratch in L1 bank A).
  * Modelled BF537 cycles (--timing bf537) per call:
- *   160x120: 789,535 = 85.4 per candidate; 320x240: 837,089 = 90.5 (bound 60.5).
- *   Where they go at 160x120 (the same call with one charge of the model turned off): 725,345
- *   issued (the simulator's own count, 78.4 per candidate, below), ~56,000 SDRAM line fills of
- *   the frames (the template and the search area of each point, through the data cache; 320x240
- *   pays more of them), 6,678 sub-bank collisions (most of them the selection sweep, 145 a
- *   point: it loads both numerators of a pair, one 8-byte record, in one issue), ~1,400
- *   address-register stalls (per point set-up). With the banked scratch layout (bvb/ncc.h) the
- *   MAC pass, passes 1 and 2 and the copy program make no same-sub-bank dual access (in one
- *   sub-bank, T' against the search area's copies costs a cycle every other MAC). Bringing each
- *   point's search area into L1 by DMA during the previous point, instead of the copy program's
- *   byte loads through the cache, would take off the line fills: ~79 per candidate (an
- *   estimate, 85.4 less the fills' 6.1, if the DMA cost the core nothing).
- * Simulator cycles per call (--timing none, data as if in L1):
- *   160x120: 725,345 = 78.4 per candidate (C at -O2: 14,228,829 = 1538.6, 19.6x);
- *   320x240 and 640x480: 78.5 per candidate (the work does not depend on the frame size).
+ *   160x120: 752,531 = 81.4 per candidate; 320x240: 752,728 = 81.4; 640x480: 753,238 (bound
+ *   60.5; the issue's target is 80). Before memory DMA: 789,535 = 85.4 and 837,089 = 90.5.
+ *   With memory DMA (below) no point's pixels are read through the data cache, so the count no
+ *   longer depends on the frame size. Where the 752,531 go at 160x120 (from the model's
+ *   per-cause totals, --timing-report, of the bench's run with this code against the one
+ *   before memory DMA, which also count the harness's own work: the split is an estimate
+ *   where marked ~): ~725,000 issued for the work itself (as before, 78.4 per candidate),
+ *   ~12,500 issued for memory DMA (~390 a point: the DMA helper's move, start and wait, ~150,
+ *   and the job bookkeeping here, finding the point after next and the owners of the two
+ *   sets, ~240 with calls, returns and taken branches at 5 cycles each), ~3,500 waiting for
+ *   the first point's job (850 bytes at 8-bit elements; every later job is over before it is
+ *   waited for),
+ *   6,678 sub-bank collisions (most of them the selection sweep, 145 a point: it loads both
+ *   numerators of a pair, one 8-byte record, in one issue), ~190 system MMR accesses at 8
+ *   cycles (DMA start and wait), ~2,000 address-register stalls (per point set-up), and what
+ *   still goes through the cache (the points and results arrays). With the banked scratch
+ *   layout (bvb/ncc.h) the MAC pass, passes 1 and 2 and the copy program make no same-sub-bank
+ *   dual access (in one sub-bank, T' against the search area's copies costs a cycle every
+ *   other MAC). What is left to reach 80: the sweep's collisions (split each numerator record
+ *   over two sub-banks, or load the lanes in different cycles, 2 pairs in 6 issues: ~4,500)
+ *   and the DMA bookkeeping (fewer calls: inline the owner look-up and the job's sources).
+ * Memory DMA (r = 5, 5 <= s <= 8, both frames in SDRAM, the scratch where DMA reaches; else the
+ *   frames are read in place through the cache as before): a job of two transfers per point
+ *   (bvb/dma.h) brings its L x L search area of frame 2 and its w x w template of frame 1 into
+ *   one of two sets of byte buffers in the scratch's fourth sub-bank. The job for the point
+ *   after next is started just before this point's MAC pass (which copies the next point's
+ *   bytes, already in L1, into the spare He, Ho), into the set the next point does not use,
+ *   and waited for before the next MAC pass: ~3,500 cycles of DMA under ~18,000 of MACs. The
+ *   first point's job is waited for at once, the second's runs during the first's passes.
+ * Simulator cycles per call (--timing none): 738,970 at 160x120 (the simulator's untimed DMA
+ *   is waited for by polling; before memory DMA 725,345 = 78.4 per candidate); C at -O2:
+ *   14,228,829 = 1538.6 per candidate.
  * Lower bound: a candidate is 121 multiply-accumulates and the two MAC units do two a cycle, so
  * 60.5 cycles per candidate (its loads, 121 data words and 61 template words per pair of
  * candidates, fit in the same cycles). The MAC pass runs at that bound for the candidate pairs
@@ -30,12 +47,14 @@
  * template at many offsets, and each of those costs an exact comparison (~200 cycles): on the
  * Middlebury pairs (RubberWhale, Grove2, Urban2, Dimetrodon, Hydrangea; 48 points, r = 5, s = 8)
  * 256 to 391 cycles per candidate, 4 to 6 times faster than the C reference there.
- * ncc_scoremap (one point, every candidate scored exactly): 166,822 modelled cycles at 160x120
- * (577 per score), 179,697 at 320x240; 164,439 issued, ~400 address-register stalls (one a
- * candidate in _ncc_exactv), no collisions, the rest SDRAM.
- * Working set: the scratch buffer, 13.1 KB for r = 5, s = 8 (L1 data bank A in the bench, frames
- * in SDRAM, read once per point: a byte per pixel of the search area and of the template). The
- * copy program's P-register loads are used as addresses 6 cycles later (no stall).
+ * ncc_scoremap (one point, every candidate scored exactly): 166,765 modelled cycles at 160x120
+ * (577 per score), 179,722 at 320x240; 164,464 issued, ~400 address-register stalls (one a
+ * candidate in _ncc_exactv), no collisions, the rest SDRAM. It reads its one point through the
+ * cache: memory DMA would wait ~3,500 cycles for it against ~2,300 of line fills at 160x120
+ * (~15,000 at 320x240), so it is not used there.
+ * Working set: the scratch buffer, 14.9 KB for r = 5, s = 8 (L1 data bank A in the bench, frames
+ * in SDRAM, read once per point by DMA: a byte per pixel of the search area and of the
+ * template). The copy program's P-register loads are used as addresses 6 cycles later (no stall).
  *
  * Per point the work is split into passes over the scratch buffer:
  *   template   T' = N*T - ST (16-bit), flat and with padded rows; vt = N*STT - ST^2
@@ -129,11 +148,37 @@
 #define CTX_DUMMY 272 /* 36 bytes: where the program's idle chunks write (unbanked layout) */
 #define CTX_DUMMYP 312 /* the dummy area's address */
 #define CTX_SEGB 320  /* the selection sweep's pairs before the seed's column pair */
+#define CTX_DMAP 316  /* the DMA area (below), or 0: no memory DMA */
+#define CTX_TSRC 324  /* this point's template in L1 (w x w bytes), or 0: read frame 1 */
+#define CTX_BSRC 328  /* this point's search area in L1 (L x L bytes), or 0: read frame 2 */
+#define CTX_CUR 332   /* this point's entry in the points array */
 #define CTX_SIZE 336
 #define CHUNK 18      /* pixels per chunk of the copy program */
 
+/* The DMA area (banked layout, after NQ2 in sub-bank 3; bvb/ncc.h BVB_NCC_DMA_BYTES): the job,
+ * one transfer description, the state, and two sets of (search area, template) bytes, each
+ * owned by the point whose copy it holds (its entry in the points array), filled by memory DMA
+ * one point ahead of its use. */
+#define D_JOB 0       /* BVB_DMA_JOB_BYTES: slot 0 the search area, slot 1 the template */
+#define D_X 112       /* struct bvb_dma_xfer */
+#define D_FLY 136     /* the point whose job is in flight, or 0 */
+#define D_FLYSET 140  /* its set, times 4 */
+#define D_OWN0 144    /* the point whose bytes set 0 holds (complete), or 0 */
+#define D_OWN1 148    /* set 1 */
+#define D_WANT 152    /* temporaries */
+#define D_WSET 156
+#define D_AFTER 160   /* the next point inside the frame after this entry is */
+#define D_NEXT 164    /* this one (0: none), */
+#define D_NLEFT 168   /* with this many points left from it on */
+#define D_SET0 176    /* the search area (L x L bytes, L <= 27), then the template at +D_TPL */
+#define D_SET1 1032
+#define D_TPL 732
+#define D_BYTES 1888  /* = BVB_NCC_DMA_BYTES */
+
 #define MAX_RADIUS 5
 #define MAX_SEARCH 16
+
+#include "bvb/dma.h"
 
 	.section .l1.text, "ax"
 
@@ -180,6 +225,35 @@ _bvb_ncc_match_asm:
 	[p5 + CTX_SEEDX] = r0;
 	[p5 + CTX_SEEDY] = r0;
 	call _ncc_layout;
+	call _ncc_dlayout;
+	/* with memory DMA: the first point's bytes now (waited for), and the next point's job
+	 * during the first point's passes */
+	p4 = [p5 + CTX_DMAP];
+	r5 = [p5 + CTX_NLEFT];
+	p0 = [p5 + CTX_PTS];
+	r0 = p4;
+	cc = r0 == 0;
+	if cc jump .Lm_point;
+	call _ncc_nextin;
+	cc = r0 == 0;
+	if cc jump .Lm_point;
+	[p5 + CTX_T17] = r0;
+	[p5 + CTX_T18] = r5;
+	r1 = 0;
+	call _ncc_dstart;
+	call _ncc_dwait;
+	r0 = [p5 + CTX_DMAP];
+	cc = r0 == 0;
+	if cc jump .Lm_point;
+	p0 = [p5 + CTX_T17];
+	p0 += 4;
+	r5 = [p5 + CTX_T18];
+	r5 += -1;
+	call _ncc_nextin;
+	cc = r0 == 0;
+	if cc jump .Lm_point;
+	r1 = 1;
+	call _ncc_dstart;
 .Lm_point:
 	r5 = [p5 + CTX_NLEFT];
 	cc = r5 <= 0;
@@ -187,6 +261,7 @@ _bvb_ncc_match_asm:
 	r5 += -1;
 	[p5 + CTX_NLEFT] = r5;
 	p4 = [p5 + CTX_PTS];
+	[p5 + CTX_CUR] = p4;
 	r0 = w[p4++] (x);
 	r1 = w[p4++] (x);
 	[p5 + CTX_PTS] = p4;
@@ -209,6 +284,23 @@ _bvb_ncc_match_asm:
 	r4 = [p5 + CTX_H];
 	cc = r3 < r4;
 	if !cc jump .Lm_border;
+	/* this point's bytes in L1, if a job brought them (waiting for it if it is in flight) */
+	r0 = 0;
+	[p5 + CTX_TSRC] = r0;
+	[p5 + CTX_BSRC] = r0;
+	p4 = [p5 + CTX_DMAP];
+	r0 = [p5 + CTX_CUR];
+	r1 = p4;
+	cc = r1 == 0;
+	if cc jump .Lm_tpl;
+	call _ncc_dfind;
+	cc = r0 == 0;
+	if cc jump .Lm_tpl;
+	[p5 + CTX_BSRC] = r0;
+	r1 = D_TPL (x);
+	r0 = r0 + r1;
+	[p5 + CTX_TSRC] = r0;
+.Lm_tpl:
 	call _ncc_template;
 	cc = r0 == 0;
 	if cc jump .Lm_flat;
@@ -277,7 +369,7 @@ _bvb_ncc_match_asm:
 .Lm_bad:
 	/* parameters out of range: every point gets BVB_NCC_BAD_PARAMS, the scratch is not used */
 	cc = r5 <= 0;
-	if cc jump .Lm_done;
+	if cc jump .Lm_ret;
 	r0 = 0;
 	r1 = 3;
 .Lm_bad1:
@@ -288,7 +380,17 @@ _bvb_ncc_match_asm:
 	r5 += -1;
 	cc = r5 <= 0;
 	if !cc jump .Lm_bad1;
+	jump .Lm_ret;
 .Lm_done:
+	/* every job started is waited for by the point it serves; this only makes sure */
+	p4 = [p5 + CTX_DMAP];
+	nop;
+	nop;
+	r0 = p4;
+	cc = r0 == 0;
+	if cc jump .Lm_ret;
+	call _ncc_dwait;
+.Lm_ret:
 	(r7:4, p5:3) = [sp++];
 	rets = [sp++];
 	rts;
@@ -415,6 +517,9 @@ _ncc_layout:
 	r0 = 0;
 	[p5 + CTX_PIPE] = r0;
 	[p5 + CTX_PRE] = r0;
+	[p5 + CTX_DMAP] = r0;
+	[p5 + CTX_TSRC] = r0;
+	[p5 + CTX_BSRC] = r0;
 	r3 = [p5 + CTX_R];
 	r4 = [p5 + CTX_S];
 	r0 = 5;
@@ -524,43 +629,117 @@ _ncc_layout:
 
 
 /* ------------------------------------------------------------------------------------------- */
-/* The copy program for the next point that is inside the frame, if any: two chunks of CHUNK
- * pixels per row of its search area ([0, CHUNK) and [L - CHUNK, L), overlapping), each a
- * (source, He destination, Ho destination) triple for the spare buffers. Sets CTX_PRE. */
+/* The first of the R5 points from entry P0 on whose search area lies in the frame: R0 = its
+ * entry, or 0. Clobbers R0-R3, R5-R7, P0. */
 	.align 4
-_ncc_prebuild:
-	r5 = [p5 + CTX_NLEFT];
+_ncc_nextin:
+	r0 = 0;
 	cc = r5 <= 0;
-	if cc jump .Lpb_none;
-	p0 = [p5 + CTX_PTS];
+	if cc jump .Lni_out;
 	r2 = [p5 + CTX_R];
 	r3 = [p5 + CTX_S];
 	r2 = r2 + r3;        /* r + s */
 	r6 = [p5 + CTX_W];
 	r7 = [p5 + CTX_H];
-.Lpb_scan:
+.Lni_scan:
 	r0 = w[p0++] (x);
 	r1 = w[p0++] (x);
 	r3 = r0 - r2;
 	cc = r3 < 0;
-	if cc jump .Lpb_next;
+	if cc jump .Lni_next;
 	r3 = r1 - r2;
 	cc = r3 < 0;
-	if cc jump .Lpb_next;
+	if cc jump .Lni_next;
 	r3 = r0 + r2;
 	cc = r3 < r6;
-	if !cc jump .Lpb_next;
+	if !cc jump .Lni_next;
 	r3 = r1 + r2;
 	cc = r3 < r7;
-	if !cc jump .Lpb_next;
-	/* found: six running pointers (source, He, Ho for both chunks), one store and one add a cycle */
-	r1 = r1 - r2;
-	r3 = [p5 + CTX_STRIDE];
-	r1 *= r3;
-	r0 = r0 - r2;
-	r0 = r0 + r1;
-	r1 = [p5 + CTX_FRAME2];
-	r0 = r0 + r1;        /* source, row 0 */
+	if !cc jump .Lni_next;
+	r0 = p0;
+	r0 += -4;
+	rts;
+.Lni_next:
+	r5 += -1;
+	cc = r5 <= 0;
+	if !cc jump .Lni_scan (bp);
+	r0 = 0;
+.Lni_out:
+	rts;
+
+/* ------------------------------------------------------------------------------------------- */
+/* The copy program for the next point that is inside the frame, if any: two chunks of CHUNK
+ * pixels per row of its search area ([0, CHUNK) and [L - CHUNK, L), overlapping), each a
+ * (source, He destination, Ho destination) triple for the spare buffers. Sets CTX_PRE.
+ * With memory DMA the source is that point's copy in L1 (its job, started during the last MAC
+ * pass, is waited for here), and the job for the in-frame point after it starts here, into the
+ * other set, so that it runs during this MAC pass. */
+	.align 4
+_ncc_prebuild:
+	[--sp] = rets;
+	p4 = [p5 + CTX_DMAP];
+	r5 = [p5 + CTX_NLEFT];
+	p0 = [p5 + CTX_PTS];
+	r0 = p4;
+	cc = r0 == 0;
+	if cc jump .Lpb_scan;
+	/* the next point: the last prebuild found it if it ran for the point before */
+	r0 = [p4 + D_AFTER];
+	r1 = [p5 + CTX_CUR];
+	cc = r0 == r1;
+	if !cc jump .Lpb_scan;
+	r0 = [p4 + D_NEXT];
+	r5 = [p4 + D_NLEFT];
+	jump .Lpb_have;
+.Lpb_scan:
+	call _ncc_nextin;
+.Lpb_have:
+	cc = r0 == 0;
+	if cc jump .Lpb_none;
+	[p5 + CTX_T17] = r0; /* the next point */
+	[p5 + CTX_T18] = r5; /* points left from it on */
+	r1 = 0;
+	[p5 + CTX_T19] = r1; /* its search area in L1, or 0 */
+	r1 = [p5 + CTX_DMAP];
+	cc = r1 == 0;
+	if cc jump .Lpb_prog;
+	call _ncc_dfind;
+	[p5 + CTX_T19] = r0;
+	r1 = [p5 + CTX_DMAP];
+	cc = r1 == 0;
+	if cc jump .Lpb_prog;
+	r2 = D_SET0;
+	r1 = r1 + r2;
+	cc = r0 == r1;
+	r0 = cc;             /* the set the next point does not use */
+	[p5 + CTX_T16] = r0;
+	p0 = [p5 + CTX_T17];
+	r5 = [p5 + CTX_T18];
+	r5 += -1;
+	p0 += 4;
+	call _ncc_nextin;
+	r1 = [p5 + CTX_T17];
+	[p4 + D_AFTER] = r1;
+	[p4 + D_NEXT] = r0;
+	[p4 + D_NLEFT] = r5;
+	cc = r0 == 0;
+	if cc jump .Lpb_prog;
+	r1 = [p5 + CTX_T16];
+	call _ncc_dstart;
+.Lpb_prog:
+	p0 = [p5 + CTX_T17];
+	r2 = [p5 + CTX_R];
+	r3 = [p5 + CTX_S];
+	r2 = r2 + r3;        /* r + s */
+	r0 = w[p0] (x);
+	r1 = w[p0 + 2] (x);
+	/* six running pointers (source, He, Ho for both chunks), one store and one add a cycle */
+	r3 = [p5 + CTX_T19];
+	cc = r3 == 0;
+	if cc jump .Lpb_frame;
+	r0 = r3;             /* rows of L bytes */
+	r3 = [p5 + CTX_L];
+.Lpb_go:
 	r1 = [p5 + CTX_HE2];
 	r2 = [p5 + CTX_HO2];
 	r2 += -2;            /* pixel c of a row at +2c in both */
@@ -585,13 +764,278 @@ _ncc_prebuild:
 	r5 = r5 + r6 (ns) || [p0++] = r4 || nop;
 	r0 = 1;
 	[p5 + CTX_PRE] = r0;
-	rts;
-.Lpb_next:
-	r5 += -1;
-	cc = r5 <= 0;
-	if !cc jump .Lpb_scan (bp);
 .Lpb_none:
+	rets = [sp++];
 	rts;
+.Lpb_frame:
+	r1 = r1 - r2;
+	r3 = [p5 + CTX_STRIDE];
+	r1 *= r3;
+	r0 = r0 - r2;
+	r0 = r0 + r1;
+	r1 = [p5 + CTX_FRAME2];
+	r0 = r0 + r1;        /* source, row 0 */
+	jump .Lpb_go;
+
+/* ------------------------------------------------------------------------------------------- */
+/* Memory DMA (bvb/dma.h) of each point's search area and template into L1, one point ahead.
+ * _ncc_dlayout: on for the banked layout with both frames wholly in SDRAM and the DMA area
+ * reachable by DMA (not the scratchpad), and both slots prepared (8-bit elements: L and w are
+ * odd, so every later move keeps the shape); else CTX_DMAP stays 0 and the frames are read
+ * through the cache as before. Clobbers R0-R7, P0-P2, P4. */
+	.align 4
+_ncc_dlayout:
+	[--sp] = rets;
+	r0 = [p5 + CTX_R];
+	r1 = 5;
+	cc = r0 == r1;
+	if !cc jump .Ldl_out;
+	r0 = [p5 + CTX_S];
+	cc = r0 < r1;
+	if cc jump .Ldl_out;
+	r1 = 8;
+	cc = r1 < r0;
+	if cc jump .Ldl_out;
+	r4 = [p5 + CTX_H];
+	r5 = [p5 + CTX_W];
+	r1 = 1;
+	cc = r4 < r1;
+	if cc jump .Ldl_out;
+	cc = r5 < r1;
+	if cc jump .Ldl_out;
+	r4 += -1;
+	r0 = [p5 + CTX_STRIDE];
+	r4 *= r0;
+	r4 = r4 + r5;        /* a frame's extent */
+	r6.l = 0;
+	r6.h = 0x0200;       /* the end of SDRAM */
+	r0 = [p5 + CTX_FRAME1];
+	r1 = r0 + r4;
+	cc = r1 < r0 (iu);
+	if cc jump .Ldl_out;
+	cc = r6 < r1 (iu);
+	if cc jump .Ldl_out;
+	r0 = [p5 + CTX_FRAME2];
+	r1 = r0 + r4;
+	cc = r1 < r0 (iu);
+	if cc jump .Ldl_out;
+	cc = r6 < r1 (iu);
+	if cc jump .Ldl_out;
+	/* the area: after NQ2's (L+1) columns of 2*KSB bytes and its two spare words */
+	r0 = [p5 + CTX_L];
+	r0 += 1;
+	r1 = [p5 + CTX_KSB];
+	r0 *= r1;
+	r0 = r0 << 1;
+	r1 = [p5 + CTX_NQ2];
+	r0 = r0 + r1;
+	r0 += 8;
+	r7 = r0;
+	r1 = D_BYTES (x);
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ldl_out;
+	p4 = r7;
+	r0 = 0;
+	[p4 + D_FLY] = r0;
+	[p4 + D_FLYSET] = r0;
+	[p4 + D_OWN0] = r0;
+	[p4 + D_OWN1] = r0;
+	[p4 + D_AFTER] = r0;
+	/* slot 0: L rows of L bytes of frame 2 into a set; slot 1: w rows of w bytes of frame 1 */
+	r0 = [p5 + CTX_FRAME2];
+	[p4 + D_X + DMAX_SRC] = r0;
+	r0 = [p5 + CTX_STRIDE];
+	[p4 + D_X + DMAX_SS] = r0;
+	r1 = D_SET0;
+	r0 = r7 + r1;
+	[p4 + D_X + DMAX_DST] = r0;
+	r0 = [p5 + CTX_L];
+	[p4 + D_X + DMAX_DS] = r0;
+	[p4 + D_X + DMAX_W] = r0;
+	[p4 + D_X + DMAX_ROWS] = r0;
+	r0 = r7;
+	r1 = 0;
+	r2 = D_X;
+	r2 = r2 + r7;
+	call _bvb_dma_prepare;
+	cc = r0 < 0;
+	if cc jump .Ldl_out;
+	r0 = [p5 + CTX_FRAME1];
+	[p4 + D_X + DMAX_SRC] = r0;
+	r1 = D_SET0 + D_TPL (x);
+	r0 = r7 + r1;
+	[p4 + D_X + DMAX_DST] = r0;
+	r0 = [p5 + CTX_WT];
+	[p4 + D_X + DMAX_DS] = r0;
+	[p4 + D_X + DMAX_W] = r0;
+	[p4 + D_X + DMAX_ROWS] = r0;
+	r0 = r7;
+	r1 = 1;
+	r2 = D_X;
+	r2 = r2 + r7;
+	call _bvb_dma_prepare;
+	cc = r0 < 0;
+	if cc jump .Ldl_out;
+	[p5 + CTX_DMAP] = r7;
+.Ldl_out:
+	rets = [sp++];
+	rts;
+
+/* _ncc_dwait: waits for the job in flight, if any, and records its set as holding its point's
+ * bytes; on a DMA error memory DMA is off for the rest of the call (CTX_DMAP = 0). P4 =
+ * CTX_DMAP (not 0). Clobbers R0-R3, P0-P2. */
+	.align 4
+_ncc_dwait:
+	r0 = [p4 + D_FLY];
+	cc = r0 == 0;
+	if cc jump .Ldw_out;
+	[--sp] = rets;
+	call _bvb_dma_wait;
+	rets = [sp++];
+	r1 = [p4 + D_FLY];
+	r2 = 0;
+	[p4 + D_FLY] = r2;
+	cc = r0 == 0;
+	if !cc jump .Ldw_err;
+	r0 = [p4 + D_FLYSET];
+	r2 = [p4 + D_OWN0];
+	r3 = [p4 + D_OWN1];
+	cc = r0 == 0;
+	if cc r2 = r1;
+	if !cc r3 = r1;
+	[p4 + D_OWN0] = r2;
+	[p4 + D_OWN1] = r3;
+.Ldw_out:
+	rts;
+.Ldw_err:
+	[p5 + CTX_DMAP] = r2;
+	rts;
+
+/* _ncc_dfind: R0 = a point's entry; R0 = the start of the set holding its bytes (search area,
+ * template at +D_TPL), or 0. Waits for its job if that is in flight. P4 = CTX_DMAP (not 0).
+ * Clobbers R0-R3, P0-P2. */
+	.align 4
+_ncc_dfind:
+	r1 = [p4 + D_FLY];
+	cc = r0 == r1;
+	if !cc jump .Ldf_look;
+	[p4 + D_WANT] = r0;
+	[--sp] = rets;
+	call _ncc_dwait;
+	rets = [sp++];
+	r1 = [p5 + CTX_DMAP];
+	cc = r1 == 0;
+	if cc jump .Ldf_none;
+	r0 = [p4 + D_WANT];
+.Ldf_look:
+	/* without branches (a taken one costs 9 cycles unhinted): the set's offset, or 0 */
+	r1 = [p4 + D_OWN0];
+	r2 = [p4 + D_OWN1];
+	cc = r0 == r2;
+	r2 = D_SET1 (x);
+	r3 = 0;
+	if cc r3 = r2;
+	cc = r0 == r1;
+	r2 = D_SET0;
+	if cc r3 = r2;
+	r0 = p4;
+	r0 = r0 + r3;
+	cc = r3 == 0;
+	if cc r0 = r3;
+	rts;
+.Ldf_none:
+	r0 = 0;
+	rts;
+
+/* _ncc_dstart: R0 = a point's entry (inside the frame), R1 = a set (0, 1): starts the job that
+ * copies its search area and template into that set (after the job in flight, if any). P4 =
+ * CTX_DMAP (not 0). Clobbers R0-R3, P0-P2. */
+	.align 4
+_ncc_dstart:
+	[--sp] = rets;
+	[--sp] = r0;
+	r1 = r1 << 2;
+	[p4 + D_WSET] = r1;
+	r0 = [p4 + D_FLY];
+	cc = r0 == 0;
+	if !cc jump .Lds_busy;
+.Lds_idle:
+	r0 = [sp];
+	[p4 + D_WANT] = r0;
+	/* the set's bytes are about to change: no owner */
+	r1 = [p4 + D_WSET];
+	r0 = 0;
+	r2 = [p4 + D_OWN0];
+	r3 = [p4 + D_OWN1];
+	cc = r1 == 0;
+	if cc r2 = r0;
+	if !cc r3 = r0;
+	[p4 + D_OWN0] = r2;
+	[p4 + D_OWN1] = r3;
+	r2 = D_SET0;
+	r3 = D_SET1 (x);
+	if !cc r2 = r3;
+	r0 = p4;
+	r2 = r2 + r0;        /* the set */
+	r0 = r2;
+	r1 = D_TPL (x);
+	r0 = r0 + r1;
+	[p4 + D_X + DMAX_DST] = r0;
+	[--sp] = r2;
+	/* the template: frame 1 at (x - r, y - r) */
+	p0 = [p4 + D_WANT];
+	r0 = w[p0] (x);
+	r1 = w[p0 + 2] (x);
+	r2 = [p5 + CTX_R];
+	r0 = r0 - r2;
+	r1 = r1 - r2;
+	r2 = [p5 + CTX_STRIDE];
+	r1 *= r2;
+	r0 = r0 + r1;
+	r1 = [p5 + CTX_FRAME1];
+	r1 = r1 + r0;
+	[p4 + D_X + DMAX_SRC] = r1;
+	r1 = [p5 + CTX_S];
+	r2 *= r1;
+	r0 = r0 - r1;
+	r0 = r0 - r2;        /* (x - r - s, y - r - s) */
+	r1 = [p5 + CTX_FRAME2];
+	r0 = r0 + r1;
+	[p4 + D_WANT] = r0;  /* the search area's source */
+	r0 = p4;
+	r1 = 1;
+	r2 = p4;
+	r3 = D_X;
+	r2 = r2 + r3;
+	call _bvb_dma_move;
+	r0 = [p4 + D_WANT];
+	[p4 + D_X + DMAX_SRC] = r0;
+	r0 = [sp++];
+	[p4 + D_X + DMAX_DST] = r0;
+	r0 = p4;
+	r1 = 0;
+	r2 = p4;
+	r3 = D_X;
+	r2 = r2 + r3;
+	call _bvb_dma_move;
+	r0 = p4;
+	r1 = 2;
+	call _bvb_dma_start;
+	r0 = [p4 + D_WSET];
+	[p4 + D_FLYSET] = r0;
+	r0 = [sp];
+	[p4 + D_FLY] = r0;
+.Lds_out:
+	r0 = [sp++];
+	rets = [sp++];
+	rts;
+.Lds_busy:
+	call _ncc_dwait;
+	r0 = [p5 + CTX_DMAP];
+	cc = r0 == 0;
+	if !cc jump .Lds_idle;
+	jump .Lds_out;
 
 /* ------------------------------------------------------------------------------------------- */
 /* Template: ST (ALU) and STT (MAC) in two cycles per pixel (one dual MAC cannot do both: its
@@ -611,6 +1055,12 @@ _ncc_template:
 	p0 = [p5 + CTX_FRAME1];
 	p1 = r0;
 	p0 = p0 + p1;        /* top left of the template */
+	r1 = [p5 + CTX_TSRC];
+	cc = r1 == 0;
+	if cc jump .Lt_src;
+	p0 = r1;             /* its copy in L1, rows of w bytes */
+	r2 = [p5 + CTX_WT];
+.Lt_src:
 	p2 = p0;
 	r4 = [p5 + CTX_WT];
 	p3 = r4;
@@ -689,6 +1139,12 @@ _ncc_build:
 	p1 = r0;
 	p0 = p0 + p1;
 	r5 = [p5 + CTX_L];
+	r0 = [p5 + CTX_BSRC];
+	cc = r0 == 0;
+	if cc jump .Lb_src;
+	p0 = r0;             /* its copy in L1, rows of L bytes */
+	r3 = r5;
+.Lb_src:
 	r0 = r3 - r5;
 	p1 = r0;             /* stride - L */
 	p2 = [p5 + CTX_HE];

@@ -45,7 +45,7 @@
  * Points that are not BVB_NCC_OK report dx = dy = score = 0. A flat template (vt = 0) reports
  * BVB_NCC_FLAT (every score would be 0).
  * scratch: BVB_NCC_SCRATCH_SIZE(r, s) bytes, 4-byte aligned (working buffers of the assembly;
- * the C reference does not use it). For r = 5, s = 8 it is 13,416 bytes (banked, below): L1 data
+ * the C reference does not use it). For r = 5, s = 8 it is 15,304 bytes (banked, below): L1 data
  * bank A in the robot's firmware, frames in SDRAM. */
 #ifndef BVB_NCC_H
 #define BVB_NCC_H
@@ -74,8 +74,13 @@
  * sums; the squared column sums), so that with the scratch at the start of a bank (within 350
  * bytes after a 4 KB boundary) the kernel's dual accesses never meet in one L1 sub-bank. */
 #define BVB_NCC_BANKED(r, s) ((r) == 5 && (s) >= 5 && (s) <= 8)
+/* The banked layout ends (in the fourth block, after the squared column sums) with the memory
+ * DMA area: a job, its state and two sets of (search area, template) bytes, one filled by DMA
+ * while the other is read (used when both frames are in SDRAM and the area is where DMA
+ * reaches, bvb/dma.h; otherwise the frames are read in place through the cache). */
+#define BVB_NCC_DMA_BYTES 1888
 #define BVB_NCC_SCRATCH_SIZE(r, s)                                                                 \
-  (BVB_NCC_BANKED(r, s) ? 12288 + 8 * (BVB_NCC_L(r, s) + 1) * (((s) + 3) / 2) + 8 :                \
+  (BVB_NCC_BANKED(r, s) ? 12288 + 8 * (BVB_NCC_L(r, s) + 1) * (((s) + 3) / 2) + 8 + BVB_NCC_DMA_BYTES : \
   336 + 4 * BVB_NCC_L(r, s) * (BVB_NCC_L(r, s) + 1) + 4                                           \
    + 4 * (((2 * (r) + 1) * (2 * (r) + 1) + 1) / 2) + 4 * (2 * (r) + 1) * ((r) + 1)                \
    + 12 * (BVB_NCC_L(r, s) + 1) * (((s) + 3) / 2) + 4 * (2 * (s) + 2) * (2 * (s) + 2)               \
