@@ -60,20 +60,10 @@
 	R5 = CYCLES;
 	R5 = R5 - R4;
 	.endm
-	# Poll DMA_DONE; core cycles from the CONFIG write to seeing it in R7.
+	# Poll DMA_DONE, core cycles from the CONFIG write to seeing it in R7, clear it.
 	.macro wait_cycles
-	imm32 R1, 1000000
-1:	R0 = W[P5 + 0x28] (Z);
-	CC = BITTST (R0, 0);
-	IF CC JUMP 2f;
-	R1 += -1;
-	CC = R1 == 0;
-	IF !CC JUMP 1b (BP);
-	dbg_fail
-2:	R7 = CYCLES;
-	R7 = R7 - R6;
-	mmr16 P4, 0x28, 1
-	mmr16 P5, 0x28, 1
+	timed_wait
+	clr_done
 	.endm
 	# Fail unless R2 <= R7 <= R2 + 100.
 	.macro chk_from_r2

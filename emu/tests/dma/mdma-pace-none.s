@@ -43,19 +43,6 @@
 	R7 = CYCLES;
 	R7 = R7 - R6;
 	.endm
-	.macro chk_window lo:req, hi:req
-	ldc R0, \lo
-	CC = R7 < R0;
-	IF CC JUMP .Lfail;
-	ldc R0, \hi
-	CC = R0 < R7;
-	IF CC JUMP .Lfail;
-	.endm
-	.macro clr_done
-	mmr16 P4, 0x28, 1
-	mmr16 P5, 0x28, 1
-	.endm
-
 	start
 
 	R0 = SYSCFG;

@@ -69,32 +69,6 @@
 	R6 = CYCLES;
 	W[P5 + 0x08] = R0;
 	.endm
-	.macro timed_wait
-	imm32 R1, 1000000
-1:	R0 = W[P5 + 0x28] (Z);
-	CC = BITTST (R0, 0);
-	IF CC JUMP 2f;
-	R1 += -1;
-	CC = R1 == 0;
-	IF !CC JUMP 1b (BP);
-	dbg_fail
-2:	R7 = CYCLES;
-	R7 = R7 - R6;
-	.endm
-	# Fail unless lo <= R7 <= hi.
-	.macro chk_window lo:req, hi:req
-	ldc R0, \lo
-	CC = R7 < R0;
-	IF CC JUMP .Lfail;
-	ldc R0, \hi
-	CC = R0 < R7;
-	IF CC JUMP .Lfail;
-	.endm
-	.macro clr_done
-	mmr16 P4, 0x28, 1
-	mmr16 P5, 0x28, 1
-	.endm
-
 	start
 
 	# CYCLES counts only with SYSCFG.CCEN (bit 1).

@@ -52,34 +52,12 @@
 	mmr16 P4, 0x08, DMAEN
 	ldc R0, DMAEN | WNR | DI_EN
 	.endm
-	# Poll the destination at \base until DMA_DONE.
-	.macro wait_at base:req
-	imm32 R1, 1000000
-1:	R0 = W[\base\() + 0x28] (Z);
-	CC = BITTST (R0, 0);
-	IF CC JUMP 2f;
-	R1 += -1;
-	CC = R1 == 0;
-	IF !CC JUMP 1b (BP);
-	dbg_fail
-2:
-	.endm
 	.macro clear_all
 	ldc P3, MDMA_D0
 	mmr16 P3, 0x28, 1
 	ldc P3, MDMA_D1
 	mmr16 P3, 0x28, 1
 	.endm
-	# Fail unless \lo <= R7 <= \hi.
-	.macro window lo:req, hi:req
-	ldc R0, \lo
-	CC = R7 < R0;
-	IF CC JUMP .Lfail;
-	ldc R0, \hi
-	CC = R0 < R7;
-	IF CC JUMP .Lfail;
-	.endm
-
 	start
 
 	R0 = SYSCFG;
@@ -98,10 +76,10 @@
 	setup SRC0, BUFA
 	R6 = CYCLES;
 	W[P5 + 0x08] = R0;
-	wait_at P1
+	wait_done P1
 	R7 = CYCLES;
 	R7 = R7 - R6;
-	window 6450, 6550
+	chk_window 6450, 6550
 	clear_all
 
 	# B) both streams from SDRAM
@@ -115,11 +93,11 @@
 	R6 = CYCLES;
 	W[P1 + 0x08] = R0;
 	W[P2 + 0x08] = R5;
-	wait_at P1
-	wait_at P2
+	wait_done P1
+	wait_done P2
 	R7 = CYCLES;
 	R7 = R7 - R6;
-	window 12850, 14230
+	chk_window 12850, 14230
 	clear_all
 
 	# C) stream 1 within L1 bank B
@@ -133,11 +111,11 @@
 	R6 = CYCLES;
 	W[P1 + 0x08] = R0;
 	W[P2 + 0x08] = R5;
-	wait_at P1
+	wait_done P1
 	R7 = CYCLES;
 	R7 = R7 - R6;
-	window 6450, 6550
-	wait_at P2
+	chk_window 6450, 6550
+	wait_done P2
 	clear_all
 
 	dbg_pass
