@@ -138,16 +138,8 @@ void check(Checker &ck) {
         std::string name = std::to_string(s.w) + "x" + std::to_string(s.h) + " strides " + std::to_string(ss) +
                            "/" + std::to_string(ds) + " " + in.first;
         CheckCall c = response_call(s.w, s.h, ss, ds, std::move(in.second), name);
-        // Half the calls where the robot runs it: frames in SDRAM, scratch in L1 (the
-        // assembly's DMA path), when the scratch fits there; the rest anywhere.
-        const size_t need = c.bufs[2].data.size() + 2 * c.bufs[2].guard;
-        const uint32_t l1 = need <= ck.target().arena_bytes(BVB_PLACE_L1A) ? BVB_PLACE_L1A : BVB_PLACE_L1B;
-        if (rng.uniform(0, 1) == 0 && need <= ck.target().arena_bytes(l1)) {
-          c.bufs[2].place = l1;
-          c.case_name += " frames SDRAM";
-        } else {
-          ck.place_randomly(c);
-        }
+        // Half the calls where the robot runs it (the assembly's DMA path).
+        ck.place_streaming(c, 2, rng);
         c.bufs[0].skew = uint32_t(rng.uniform(0, 3));  // the source has no alignment contract
         ck.add(std::move(c));
       }

@@ -64,16 +64,8 @@ void check(Checker &ck) {
         // Source and destination at any alignment; the scratch is documented 4-byte aligned.
         for (auto &b : c.bufs)
           if (b.role != Role::Scratch) b.skew = uint32_t(rng.uniform(0, 3));
-        // Half the calls where the robot runs it: frames in SDRAM, scratch in L1 (the DMA
-        // path, firmware/asm/morph.S), when the scratch fits there; the rest anywhere.
-        const size_t need = c.bufs[2].data.size() + 2 * c.bufs[2].guard;
-        const uint32_t l1 = need <= ck.target().arena_bytes(BVB_PLACE_L1A) ? BVB_PLACE_L1A : BVB_PLACE_L1B;
-        if (rng.uniform(0, 1) == 0 && need <= ck.target().arena_bytes(l1)) {
-          c.bufs[2].place = l1;
-          c.case_name += " frames SDRAM";
-        } else {
-          ck.place_randomly(c);
-        }
+        // Half the calls where the robot runs it (the DMA path, firmware/asm/morph.S).
+        ck.place_streaming(c, 2, rng);
         ck.add(std::move(c));
       }
     }

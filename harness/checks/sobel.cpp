@@ -73,16 +73,8 @@ void check(Checker &ck) {
                                   std::to_string(ds) + " " + pattern_name(p));
         c.bufs[0].skew = src_skew;
         c.bufs[1].skew = out_skew;
-        // Half the calls where the robot runs it: frames in SDRAM, scratch in L1 (the DMA
-        // path, bvb/sobel.h), when the scratch fits there; the rest anywhere.
-        const size_t need = c.bufs[2].data.size() + 2 * c.bufs[2].guard;
-        const uint32_t l1 = need <= ck.target().arena_bytes(BVB_PLACE_L1A) ? BVB_PLACE_L1A : BVB_PLACE_L1B;
-        if (rng.uniform(0, 1) == 0 && need <= ck.target().arena_bytes(l1)) {
-          c.bufs[2].place = l1;
-          c.case_name += " frames SDRAM";
-        } else {
-          ck.place_randomly(c);
-        }
+        // Half the calls where the robot runs it (the DMA path, bvb/sobel.h).
+        ck.place_streaming(c, 2, rng);
         ck.add(std::move(c));
       }
       if (s16) {
@@ -96,17 +88,8 @@ void check(Checker &ck) {
         // int16 rows: 2-byte aligned, 4-byte aligned or not.
         c.bufs[1].skew = c.bufs[2].skew = out_skew & 2u;
         if (ms) c.bufs[3].skew = out_skew;
-        // As for u8: half the calls with the frames in SDRAM and the scratch in L1 (the DMA
-        // path), when the scratch fits there.
-        const int is = ms ? 4 : 3;
-        const size_t need = c.bufs[is].data.size() + 2 * c.bufs[is].guard;
-        const uint32_t l1 = need <= ck.target().arena_bytes(BVB_PLACE_L1A) ? BVB_PLACE_L1A : BVB_PLACE_L1B;
-        if (rng.uniform(0, 1) == 0 && need <= ck.target().arena_bytes(l1)) {
-          c.bufs[is].place = l1;
-          c.case_name += " frames SDRAM";
-        } else {
-          ck.place_randomly(c);
-        }
+        // As for u8 (the scratch is the buffer after the outputs).
+        ck.place_streaming(c, ms ? 4 : 3, rng);
         ck.add(std::move(c));
       }
     }

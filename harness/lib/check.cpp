@@ -216,6 +216,18 @@ void Checker::place_randomly(CheckCall &call) {
   }
 }
 
+void Checker::place_streaming(CheckCall &call, size_t scratch, Rng &rng) {
+  const Buffer &b = call.bufs[scratch];
+  const size_t need = b.data.size() + 2 * b.guard;
+  const uint32_t l1 = need <= target_.arena_bytes(BVB_PLACE_L1A) ? BVB_PLACE_L1A : BVB_PLACE_L1B;
+  if (rng.uniform(0, 1) == 0 && need <= target_.arena_bytes(l1)) {
+    call.bufs[scratch].place = l1;
+    call.case_name += " frames SDRAM";
+  } else {
+    place_randomly(call);
+  }
+}
+
 void Checker::add(CheckCall call, Observer observer) {
   // The case number counts every call the family makes, queued or not, so -k and --case leave
   // every other case's number and stream as they are.

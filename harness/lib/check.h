@@ -153,6 +153,11 @@ class Checker {
   // there is room, the rest in SDRAM; which bank is tried first, and whether a call stays all
   // in SDRAM, is random. Uses the firmware image's real arena sizes.
   void place_randomly(CheckCall &call);
+  // For a kernel with a DMA path: half the calls (a draw from `rng`) where the robot runs it,
+  // its frames in SDRAM and buffer `scratch` in L1 (bank A if it fits, else B), with " frames
+  // SDRAM" added to the case name; the others, and all when the scratch fits neither bank,
+  // placed at random (place_randomly).
+  void place_streaming(CheckCall &call, size_t scratch, Rng &rng);
 
   // Queues the call on every implementation the firmware has (plus the host reference).
   void add(CheckCall call, Observer observer = {});
