@@ -258,9 +258,16 @@ TEST(Cli, SimulatorKilledFromOutsideIsNotBlamedOnTheKernel) {
   }
   ASSERT_FALSE(kids.empty()) << "no simulator started";
   usleep(200000);
-  for (pid_t k : kids) kill(k, SIGKILL);
+  // The simulator found first may have finished by now and another be running: kill whatever
+  // simulators bfbench has, again and again, until bfbench has ended.
   int status = 0;
-  waitpid(pid, &status, 0);
+  bool ended = false;
+  for (int i = 0; i < 400 && !ended; ++i) {
+    for (pid_t k : children_of(pid)) kill(k, SIGKILL);
+    usleep(25000);
+    ended = waitpid(pid, &status, WNOHANG) == pid;
+  }
+  if (!ended) waitpid(pid, &status, 0);
   std::ifstream ef(e);
   std::stringstream err;
   err << ef.rdbuf();
