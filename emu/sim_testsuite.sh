@@ -95,37 +95,34 @@ for t in "${tests[@]}"; do
 done
 tests=("${uniq_tests[@]}")
 
-# The xfail list: "<file name>  <reason>"; blank lines and '#' lines are comments.
-declare -A xfail=()
-if [[ -f $xfail_file ]]; then
-  n=0
-  while IFS= read -r line || [[ -n $line ]]; do
-    n=$((n + 1))
-    [[ $line =~ ^[[:space:]]*(#|$) ]] && continue
-    if [[ ! $line =~ ^([^[:space:]]+)[[:space:]]+([^[:space:]].*)$ ]]; then
-      die "$xfail_file:$n: want '<test file> <reason>', got '$line'"
-    fi
-    [[ -f $suite/${BASH_REMATCH[1]} ]] || die "$xfail_file:$n: no test '${BASH_REMATCH[1]}' in the suite"
-    xfail[${BASH_REMATCH[1]}]=${BASH_REMATCH[2]}
-  done <"$xfail_file"
-fi
-
-# Under a timing model, the tests in sim_testsuite.l1code ("<test file>  <reason>") are linked
-# with their code in L1 instruction SRAM, where a core fetches at full speed, as their
-# expectations assume (the reasons are in the file).
-l1code=" "
-l1code_file="$here/sim_testsuite.l1code"
-if [[ $sim_extra =~ --timing[=[:space:]]+bf537 && -f $l1code_file ]]; then
-  n=0
+# Test lists: "<test file>  <reason>" a line; blank lines and '#' lines are comments.
+# read_test_list FILE ARRAY: ARRAY[test file] = reason, each test checked to be in the suite.
+read_test_list() {
+  local file=$1 line n=0
+  local -n list=$2
   while IFS= read -r line || [[ -n $line ]]; do
     n=$((n + 1))
     [[ $line =~ ^[[:space:]]*(#|$) ]] && continue
     [[ $line =~ ^([^[:space:]]+)[[:space:]]+([^[:space:]].*)$ ]] ||
-      die "$l1code_file:$n: want '<test file> <reason>', got '$line'"
-    [[ -f $suite/${BASH_REMATCH[1]} ]] || die "$l1code_file:$n: no test '${BASH_REMATCH[1]}' in the suite"
-    l1code+="${BASH_REMATCH[1]} "
-  done <"$l1code_file"
+      die "$file:$n: want '<test file> <reason>', got '$line'"
+    [[ -f $suite/${BASH_REMATCH[1]} ]] || die "$file:$n: no test '${BASH_REMATCH[1]}' in the suite"
+    list[${BASH_REMATCH[1]}]=${BASH_REMATCH[2]}
+  done <"$file"
+}
+
+# Expected failures.
+declare -A xfail=()
+[[ -f $xfail_file ]] && read_test_list "$xfail_file" xfail
+
+# Under a timing model, the tests in sim_testsuite.l1code are linked with their code in L1
+# instruction SRAM, where a core fetches at full speed, as their expectations assume (the
+# reasons are in the file).
+declare -A l1code_list=()
+l1code_file="$here/sim_testsuite.l1code"
+if [[ $sim_extra =~ --timing[=[:space:]]+bf537 && -f $l1code_file ]]; then
+  read_test_list "$l1code_file" l1code_list
 fi
+l1code=" ${!l1code_list[*]} "
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/sim_testsuite.XXXXXX") || exit 2
 runner_pid=""

@@ -45,12 +45,6 @@
 	mmr16 P5, 0x10, 1280
 	mmr16 P5, 0x14, 1
 	mmr16 P4, 0x08, DMAEN
-	ldc R0, DMAEN | WNR | DI_EN
-	.endm
-	# Start the destination (CONFIG = R0), CYCLES before it in R6.
-	.macro start_dst
-	R6 = CYCLES;
-	W[P5 + 0x08] = R0;
 	.endm
 	# 32 dependent-free loads through P1, CYCLES around them: their cycles in R5.
 	.macro loads
@@ -91,7 +85,7 @@
 
 	# A) alone
 	setup_a
-	start_dst
+	timed_start DMAEN | WNR | DI_EN
 	wait_cycles
 	ldc R2, 6450
 	chk_from_r2
@@ -99,7 +93,7 @@
 	# B) with 32 loads from SDRAM
 	ldc P1, CORE
 	setup_a
-	start_dst
+	timed_start DMAEN | WNR | DI_EN
 	loads
 	wait_cycles
 	# The loads must have taken the EBIU for a while, or this checks nothing.
@@ -113,7 +107,7 @@
 	# C) with 32 loads from L1
 	ldc P1, BUFB
 	setup_a
-	start_dst
+	timed_start DMAEN | WNR | DI_EN
 	loads
 	wait_cycles
 	ldc R2, 6450

@@ -33,7 +33,8 @@
 	.equ DMA2D, 0x0010
 	.equ DI_EN, 0x0080
 
-	.macro timed_start cfg:req
+	# Start the destination, poll DMA_DONE with the tightest loop, cycles in R7.
+	.macro timed_run cfg:req
 	ldc R0, \cfg
 	R6 = CYCLES;
 	W[P5 + 0x08] = R0;
@@ -63,7 +64,7 @@
 	mmr16 P5, 0x18, 32
 	mmr16 P5, 0x1c, 1
 	mmr16 P4, 0x08, DMAEN
-	timed_start DMAEN | WNR | DMA2D | DI_EN
+	timed_run DMAEN | WNR | DMA2D | DI_EN
 	chk_window 32 + 11, 32 + 19
 	clr_done
 
@@ -75,7 +76,7 @@
 	mmr16 P5, 0x10, 40960
 	mmr16 P5, 0x14, 4
 	mmr16 P4, 0x08, DMAEN | WDSIZE_32
-	timed_start DMAEN | WNR | WDSIZE_32 | DI_EN
+	timed_run DMAEN | WNR | WDSIZE_32 | DI_EN
 	chk_window 40 + 11, 40 + 19
 	clr_done
 
@@ -87,7 +88,7 @@
 	mmr16 P5, 0x10, 48
 	mmr16 P5, 0x14, -1
 	mmr16 P4, 0x08, DMAEN
-	timed_start DMAEN | WNR | DI_EN
+	timed_run DMAEN | WNR | DI_EN
 	chk_window 48 + 11, 48 + 19
 
 	dbg_pass

@@ -62,13 +62,6 @@
 	.equ NDSIZE_8, 0x0800
 	.equ FLOW_SMALL, 0x6000
 
-	# Start the destination with CONFIG = cfg, reading CYCLES just before, poll its
-	# DMA_DONE, and leave the core cycles in between in R7.
-	.macro timed_start cfg:req
-	ldc R0, \cfg
-	R6 = CYCLES;
-	W[P5 + 0x08] = R0;
-	.endm
 	start
 
 	# CYCLES counts only with SYSCFG.CCEN (bit 1).
