@@ -15,7 +15,7 @@ TEST(UyvyToGrey, TakesTheYBytesOfEachPair) {
   const std::vector<uint8_t> src = {10, 1, 20, 2, 30, 3, 40, 4, 0xEE, 0xEE, 0xEE,
                                     50, 5, 60, 6, 70, 7, 80, 8};
   std::vector<uint8_t> dst(2 * 6, 0xAA);
-  bvb_uyvy_to_grey_c(src.data(), dst.data(), 4, 2, 11, 6);
+  bvb_uyvy_to_grey_c(src.data(), dst.data(), 4, 2, 11, 6, nullptr);
   const std::vector<uint8_t> want = {1, 2, 3, 4, 0xAA, 0xAA, 5, 6, 7, 8, 0xAA, 0xAA};
   EXPECT_EQ(dst, want);
 }
@@ -78,7 +78,7 @@ TEST(UyvyToRgb, InvertsTheSceneGeneratorsConversion) {
     const std::vector<uint8_t> uyvy = bvb::rgb_to_uyvy(rgb);
     std::vector<uint8_t> back(6), grey(2);
     bvb_uyvy_to_rgb24_c(uyvy.data(), back.data(), 2, 1, 4, 6);
-    bvb_uyvy_to_grey_c(uyvy.data(), grey.data(), 2, 1, 4, 2);
+    bvb_uyvy_to_grey_c(uyvy.data(), grey.data(), 2, 1, 4, 2, nullptr);
     for (int k = 0; k < 6; ++k) EXPECT_NEAR(back[k], c[k % 3], 2) << c[0] << " " << c[1] << " " << c[2];
     // Grey is the scene generator's own Y.
     EXPECT_EQ(grey[0], bvb::rgb_to_grey(rgb).data[0]);

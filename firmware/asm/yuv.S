@@ -30,18 +30,64 @@
  * rest is SDRAM, 3 bytes per pixel through 32-byte line fills and write-backs over the 16-bit
  * bus at SCLK = CCLK / 4 (at least 6 cycles per pixel of bus time at the bus's full rate). The
  * kernel takes no L1 working memory, so it cannot bring rows in by DMA ahead of use. */
+#include "bvb/stream.h"
+
 	.section .l1.text, "ax"
 	.align 4
 	.global _bvb_uyvy_to_grey_asm
 	.type _bvb_uyvy_to_grey_asm, STT_FUNC
 _bvb_uyvy_to_grey_asm:
 	[--sp] = (r7:4, p5:3);
+	[--sp] = rets;
+	sp += -12;			/* the C routines' outgoing argument space */
+	/* [sp + 56] height, [sp + 60] src_stride, [sp + 64] dst_stride, [sp + 68] scratch. The
+	 * stream's planes in the scratch: what the direct path reads back if it is refused. */
+	p0 = [sp + 68];
+	[p0 + ST_SRC0] = r0;
+	[p0 + ST_DST] = r1;
+	r3 = r2 << 1;
+	[p0 + ST_SB0] = r3;
+	[p0 + ST_DB] = r2;
+	r3 = 0;
+	[p0 + ST_SB1] = r3;
+	r3 = [sp + 60];
+	[p0 + ST_SS0] = r3;
+	r3 = [sp + 64];
+	[p0 + ST_DS] = r3;
+	r3 = [sp + 56];
+	[p0 + ST_ROWS] = r3;
+	r0 = p0;
+	call _bvb_stream_open;
+	cc = r0 == 0;
+	if !cc jump .Ldirect;
+	/* Bands: each one long row of n * width pixels, contiguous in L1 on both sides. */
+.Lband:
+	r0 = [sp + 68];
+	call _bvb_stream_next;
+	cc = r0 == 0;
+	if cc jump .Lret;
+	p0 = [sp + 68];
+	r4 = [p0 + ST_DB];
+	r4 *= r0;			/* pixels */
+	r1 = [p0 + ST_IN0];
+	r2 = [p0 + ST_OUT];
+	i3 = r1;
+	i2 = r2;
+	r3 = 1;
+	call .Lconv;
+	jump .Lband;
+
+.Ldirect:
+	p0 = [sp + 68];
+	r0 = [p0 + ST_SRC0];
+	r1 = [p0 + ST_DST];
+	r2 = [p0 + ST_DB];
 	i3 = r0;			/* source row */
 	i2 = r1;			/* destination row */
 	r4 = r2;			/* width */
-	r0 = [sp + 44];			/* src_stride */
-	r1 = [sp + 48];			/* dst_stride */
-	r3 = [sp + 40];			/* height */
+	r0 = [sp + 60];			/* src_stride */
+	r1 = [sp + 64];			/* dst_stride */
+	r3 = [sp + 56];			/* height */
 	m3 = r0;
 	m2 = r1;
 	/* Contiguous rows: one long row. */
@@ -53,10 +99,20 @@ _bvb_uyvy_to_grey_asm:
 	r5 = cc;
 	r5 = r5 & r6;
 	cc = r5 == 0;
-	if cc jump .Lrows (bp);
+	if cc jump .Ldrows (bp);
 	r4 *= r3;
 	r3 = 1;
-.Lrows:
+.Ldrows:
+	call .Lconv;
+.Lret:
+	sp += 12;
+	rets = [sp++];
+	(r7:4, p5:3) = [sp++];
+	rts;
+
+	/* r3 rows of r4 pixels from I3 (rows M3 apart) to I2 (M2 apart). Clobbers R0-R7, P0-P5,
+	 * I1-I3, B1, L1 (left 0), LC0, LC1. */
+.Lconv:
 	p5 = r3;
 	r0 = 0;				/* r1:0 is the zero pair of BYTEOP3P */
 	r1 = 0;
@@ -119,7 +175,6 @@ _bvb_uyvy_to_grey_asm:
 	i3 += m3;
 .Lrow_end:
 	i2 += m2;
-	(r7:4, p5:3) = [sp++];
 	rts;
 
 	/* Out of line, so that rows needing none fall straight through. */

@@ -1,7 +1,8 @@
 #include "bvb/yuv.h"
 
 void bvb_uyvy_to_grey_c(const uint8_t *src, uint8_t *dst, int32_t width, int32_t height,
-                        int32_t src_stride, int32_t dst_stride) {
+                        int32_t src_stride, int32_t dst_stride, void *scratch) {
+  (void)scratch;
   for (int32_t y = 0; y < height; ++y) {
     for (int32_t x = 0; x < width; ++x) dst[x] = src[2 * x + 1];
     src += src_stride;

@@ -6,6 +6,9 @@
  * >= 2 * width. No alignment is required of src, dst or the strides.
  *
  * uyvy_to_grey: dst[x] = Y of pixel x (the Y bytes, unchanged). dst_stride >= width.
+ * scratch: BVB_UYVY_TO_GREY_SCRATCH_BYTES(width) bytes, 4-byte aligned: with the frames in
+ * SDRAM and the scratch in L1 the assembly streams row bands through it (bvb/stream.h); the C
+ * reference does not use it.
  *
  * uyvy_to_rgb24: dst holds R, G, B per pixel (3 * width bytes a row, dst_stride >= 3 * width).
  * BT.601 studio range (Y 16..235, U and V 16..240 around 128), the inverse of the 8-bit integer
@@ -24,14 +27,19 @@
 
 #include <stdint.h>
 
+#include "bvb/stream.h"
+
+/* 2 width bytes a row in, width out: 9.4 KB at width 320 (bands of 6 rows), 9.8 KB at 160. */
+#define BVB_UYVY_TO_GREY_SCRATCH_BYTES(width) BVB_STREAM_SCRATCH_BYTES(2 * (width), 0, (width))
+
 #ifdef __cplusplus
 extern "C" {
 #endif
 
 void bvb_uyvy_to_grey_c(const uint8_t *src, uint8_t *dst, int32_t width, int32_t height,
-                        int32_t src_stride, int32_t dst_stride);
+                        int32_t src_stride, int32_t dst_stride, void *scratch);
 void bvb_uyvy_to_grey_asm(const uint8_t *src, uint8_t *dst, int32_t width, int32_t height,
-                          int32_t src_stride, int32_t dst_stride);
+                          int32_t src_stride, int32_t dst_stride, void *scratch);
 
 void bvb_uyvy_to_rgb24_c(const uint8_t *src, uint8_t *dst, int32_t width, int32_t height,
                          int32_t src_stride, int32_t dst_stride);
