@@ -10,21 +10,82 @@
  * The 12.4 cycles per pixel over the simulator's own count are SDRAM: each 32-byte line of the
  * three frames costs a line fill (or a dirty write-back) over the 16-bit bus at SCLK = CCLK / 4;
  * the byte loop leaves no time to hide it. */
+#include "bvb/stream.h"
+
 	.section .l1.text, "ax"
 	.align 4
 	.global _bvb_add_sat_u8_asm
 	.type _bvb_add_sat_u8_asm, STT_FUNC
 _bvb_add_sat_u8_asm:
+	[--sp] = rets;
+	sp += -12;		/* the C routines' outgoing argument space */
+	/* [sp + 28] width, [sp + 32] height, [sp + 36] src_stride, [sp + 40] dst_stride,
+	 * [sp + 44] scratch */
+	p0 = [sp + 44];
+	cc = p0 == 0;
+	if cc jump .Ldirect;
+	/* The stream's three planes (bvb/stream.h), all width bytes a row. */
+	[p0 + ST_SRC0] = r0;
+	[p0 + ST_SRC1] = r1;
+	[p0 + ST_DST] = r2;
+	r3 = [sp + 28];
+	[p0 + ST_SB0] = r3;
+	[p0 + ST_SB1] = r3;
+	[p0 + ST_DB] = r3;
+	r3 = [sp + 36];
+	[p0 + ST_SS0] = r3;
+	[p0 + ST_SS1] = r3;
+	r3 = [sp + 40];
+	[p0 + ST_DS] = r3;
+	r3 = [sp + 32];
+	[p0 + ST_ROWS] = r3;
+	r0 = p0;
+	call _bvb_stream_open;
+	cc = r0 == 0;
+	if !cc jump .Lrefused;
+	/* Each band, contiguous in L1, is one row of n * width pixels. */
+.Lband:
+	r0 = [sp + 44];
+	call _bvb_stream_next;
+	cc = r0 == 0;
+	if cc jump .Lret;
+	p0 = [sp + 44];
+	r2 = [p0 + ST_DB];
+	r2 *= r0;
+	r1 = [p0 + ST_IN0];
+	i0 = r1;
+	r1 = [p0 + ST_IN1];
+	i1 = r1;
+	r1 = [p0 + ST_OUT];
+	i2 = r1;
+	r0 = 1;
+	call .Lrows;
+	jump .Lband;
+
+.Lrefused:			/* the frames where they are */
+	p0 = [sp + 44];
+	r0 = [p0 + ST_SRC0];
+	r1 = [p0 + ST_SRC1];
+	r2 = [p0 + ST_DST];
+.Ldirect:
 	i0 = r0;
 	i1 = r1;
 	i2 = r2;
-	r0 = [sp + 20];		/* src_stride */
+	r0 = [sp + 36];		/* src_stride */
 	m0 = r0;
-	r0 = [sp + 24];		/* dst_stride */
+	r0 = [sp + 40];		/* dst_stride */
 	m1 = r0;
-	r0 = [sp + 16];		/* height */
+	r0 = [sp + 32];		/* height */
+	r2 = [sp + 28];		/* width */
+	call .Lrows;
+.Lret:
+	sp += 12;
+	rets = [sp++];
+	rts;
+
+	/* r0 rows of r2 pixels from I0, I1 (rows M0 apart) to I2 (M1 apart). */
+.Lrows:
 	lc1 = r0;
-	r2 = [sp + 12];		/* width */
 	r3 = 255;
 	lsetup (.Lrow, .Lrow_end) lc1;
 .Lrow:

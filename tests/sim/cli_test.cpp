@@ -82,7 +82,7 @@ TEST(Cli, RunWritesWhatTheHostReferenceComputes) {
   EXPECT_NE(r.out.find("cycles"), std::string::npos) << r.out;
   Image got = read_pnm(out);
   Image want(37, 11);
-  bvb_add_sat_u8_c(ia.data.data(), ib.data.data(), want.data.data(), 37, 11, 37, 37);
+  bvb_add_sat_u8_c(ia.data.data(), ib.data.data(), want.data.data(), 37, 11, 37, 37, nullptr);
   EXPECT_EQ(got.data, want.data);
   ASSERT_EQ(bfbench("run add_sat_u8 --impl host --in " + a + " --in " + b + " --out " + host).status, 0);
   EXPECT_EQ(read_pnm(host).data, want.data);

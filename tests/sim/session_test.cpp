@@ -18,7 +18,7 @@ Call add_call(const std::vector<uint8_t> &a, const std::vector<uint8_t> &b, int 
   bd.name = "dst", bd.data.assign(a.size(), 0);
   c.bufs = {ba, bb, bd};
   for (uint32_t i = 0; i < 3; ++i) c.args.push_back(Arg::buf(i));
-  for (int v : {w, h, w, w}) c.args.push_back(Arg::word(v));
+  for (int v : {w, h, w, w, 0}) c.args.push_back(Arg::word(v));  // no scratch: the direct path
   return c;
 }
 
@@ -30,7 +30,7 @@ std::vector<uint8_t> pattern(size_t n, int seed) {
 
 std::vector<uint8_t> host_sum(const std::vector<uint8_t> &a, const std::vector<uint8_t> &b, int w, int h) {
   std::vector<uint8_t> d(a.size());
-  bvb_add_sat_u8_c(a.data(), b.data(), d.data(), w, h, w, w);
+  bvb_add_sat_u8_c(a.data(), b.data(), d.data(), w, h, w, w, nullptr);
   return d;
 }
 
