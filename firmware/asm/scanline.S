@@ -53,6 +53,8 @@
 	.set .Ln, .Ln + 1
 	.endr
 
+#include "bvb/stream.h"
+
 	.section .l1.text, "ax"
 
 /* Circular buffer over the words holding bytes [ireg, ireg + len): base and length. */
@@ -70,60 +72,66 @@
 	\lreg = r2;
 .endm
 
-/* void bvb_scanline_profile_u8_asm(src, width, rows, stride, profile, scratch) */
-	.align 4
-	.global _bvb_scanline_profile_u8_asm
-	.type _bvb_scanline_profile_u8_asm, STT_FUNC
-_bvb_scanline_profile_u8_asm:
-	[--sp] = (r7:4, p5:3);
-	[--sp] = rets;
-	p5 = r0;			/* next source row */
-	m1 = r1;			/* width */
-	m2 = r2;			/* rows */
-	r3 = r1;
-	r3 += 7;
-	r3 >>= 3;
-	p3 = r3;			/* iterations of the sum pass: 8 columns each */
-	r3 = r2 >> 1;			/* rows / 2 in both halves: the first pass's addend */
-	r4 = r3 << 16;
-	r3 = r3 | r4;
-	r4 = 0;
-	[--sp] = r3;
-	[--sp] = r4;			/* [sp]: zero word, [sp + 4]: rows / 2 word */
-	p4 = [sp + 52];			/* stride */
-	r0 = [sp + 60];			/* scratch */
-	m0 = r0;
-	/* The first pass reads the rows / 2 word instead of column sums. */
-	r1 = sp;
+/* The profile's frame: the C routines' outgoing argument space at [sp], then: */
+#define F_ZERO 12	/* a zero word: the partner of an odd row */
+#define F_ROUND 16	/* rows / 2 in both halves: the first pass's addend */
+#define F_STARTED 20	/* 1 once a pass has written the column sums */
+#define F_N 24		/* rows of the chunk being summed */
+#define F_ROWS 28
+#define F_W 32
+#define F_ST 36		/* the stream, after the column sums in the scratch */
+#define F_LOC 40
+#define A_STRIDE (F_LOC + 32 + 12)	/* past RETS and 7 registers: the 4th argument on */
+#define A_PROFILE (A_STRIDE + 4)
+#define A_SCRATCH (A_STRIDE + 8)
+
+/* The first pass reads the rounding word instead of column sums (L2 = 4 over it), every
+ * later one the sums: I2, B2, L2 for the next pass, from the flag at [sp + F_STARTED]. */
+.macro SETSUM
+	r0 = [sp + F_STARTED];
+	cc = r0 == 0;
+	r1 = m0;
 	r1 += 4;
+	r2 = sp;
+	r2 += F_ROUND;
+	if cc r1 = r2;
 	i2 = r1;
-	b2 = r1;
-	l2 = 4;
-	r0 = m2;
+	b2 = r2;
+	r3 = 4;
+	r2 = 0;
+	if !cc r3 = r2;
+	l2 = r3;
+.endm
+
+/* The sums of r0 rows from P5 (rows P4 apart) into the column sums at M0 + 4 (width M1): an
+ * odd row on its own against the zero word, then pairs. Leaves L0-L2 at 0. */
+.macro CHUNK id
+	[sp + F_N] = r0;
+	SETSUM
+	r0 = [sp + F_N];
 	cc = bittst (r0, 0);
-	if !cc jump .Lp_pairs (bp);
-	/* An odd row on its own, against zeros. */
+	if !cc jump .Lc_pairs_\id (bp);
 	i0 = p5;
 	CIRC i0, b0, l0, m1
 	r0 = sp;
+	r0 += F_ZERO;
 	i1 = r0;
 	b1 = r0;
 	l1 = 4;
 	i3 = m0;
 	call .Lp_pass;
 	p5 = p5 + p4;
-	r0 = m0;
-	r0 += 4;
-	i2 = r0;
-	l2 = 0;
-.Lp_pairs:
-	r0 = m2;
+	r0 = 1;
+	[sp + F_STARTED] = r0;
+	SETSUM
+.Lc_pairs_\id:
+	r0 = [sp + F_N];
 	r0 >>= 1;
 	cc = r0 == 0;
-	if cc jump .Lp_norm;
+	if cc jump .Lc_done_\id;
 	p0 = r0;
-	lsetup (.Lp_row, .Lp_row_end) lc1 = p0;
-.Lp_row:
+	lsetup (.Lc_row_\id, .Lc_row_end_\id) lc1 = p0;
+.Lc_row_\id:
 	i0 = p5;
 	CIRC i0, b0, l0, m1
 	p5 = p5 + p4;
@@ -135,11 +143,89 @@ _bvb_scanline_profile_u8_asm:
 	r0 = m0;
 	r0 += 4;
 	i2 = r0;
-.Lp_row_end:
+.Lc_row_end_\id:
 	l2 = 0;
-.Lp_norm:
+	r0 = 1;
+	[sp + F_STARTED] = r0;
+.Lc_done_\id:
 	l0 = 0;
 	l1 = 0;
+	l2 = 0;
+.endm
+
+/* void bvb_scanline_profile_u8_asm(src, width, rows, stride, profile, scratch) */
+	.align 4
+	.global _bvb_scanline_profile_u8_asm
+	.type _bvb_scanline_profile_u8_asm, STT_FUNC
+_bvb_scanline_profile_u8_asm:
+	[--sp] = (r7:4, p5:3);
+	[--sp] = rets;
+	sp += -F_LOC;
+	[sp + F_ROWS] = r2;
+	[sp + F_W] = r1;
+	p5 = r0;			/* next source row */
+	r3 = r1;
+	r3 += 7;
+	r3 >>= 3;
+	p3 = r3;			/* iterations of the sum pass: 8 columns each */
+	r3 = r2 >> 1;			/* rows / 2 in both halves: the first pass's addend */
+	r4 = r3 << 16;
+	r3 = r3 | r4;
+	[sp + F_ROUND] = r3;
+	r4 = 0;
+	[sp + F_ZERO] = r4;
+	[sp + F_STARTED] = r4;
+	p4 = [sp + A_STRIDE];
+	/* Frames in SDRAM and the scratch in L1: the band's rows come in by DMA (bvb/stream.h),
+	 * through the stream after the column sums. */
+	r0 = [sp + A_SCRATCH];
+	r1 <<= 1;			/* 16 ceil(w / 8) + 8 = BVB_SCANLINE_PROFILE_SUMS_BYTES */
+	r1 += 15;
+	r2 = -16;
+	r1 = r1 & r2;
+	r1 += 8;
+	r0 = r0 + r1;
+	[sp + F_ST] = r0;
+	p0 = r0;
+	[p0 + ST_SRC0] = p5;
+	[p0 + ST_SS0] = p4;
+	r1 = [sp + F_W];
+	[p0 + ST_SB0] = r1;
+	[p0 + ST_SB1] = r4;
+	[p0 + ST_DB] = r4;
+	r1 = [sp + F_ROWS];
+	[p0 + ST_ROWS] = r1;
+	call _bvb_stream_open;
+	cc = r0 == 0;
+	if !cc jump .Lp_direct;
+.Lp_band:
+	r0 = [sp + F_ST];
+	call _bvb_stream_next;
+	cc = r0 == 0;
+	if cc jump .Lp_norm;
+	p0 = [sp + F_ST];
+	r1 = [sp + A_SCRATCH];
+	m0 = r1;
+	r1 = [sp + F_W];
+	m1 = r1;
+	p4 = r1;			/* the band's rows are contiguous */
+	p5 = [p0 + ST_IN0];
+	CHUNK b
+	jump .Lp_band;
+.Lp_direct:
+	r0 = [sp + A_SCRATCH];
+	m0 = r0;
+	r0 = [sp + F_W];
+	m1 = r0;
+	r0 = [sp + F_ROWS];
+	CHUNK d
+.Lp_norm:
+	r0 = [sp + A_SCRATCH];
+	m0 = r0;
+	r0 = [sp + F_W];
+	m1 = r0;
+	r0 = [sp + F_ROWS];
+	m2 = r0;
 	/* R = ceil(2^24 / rows) = Rh * 256 + Rl, Rh at most 0xffff, into r7 = Rh:Rl. */
 	p0.l = .Lrecip;
 	p0.h = .Lrecip;
@@ -156,7 +242,7 @@ _bvb_scanline_profile_u8_asm:
 	r2 = r1 << 8;
 	r2 = r0 - r2;
 	r7 = pack (r1.l, r2.l);
-	p1 = [sp + 56];			/* profile */
+	p1 = [sp + A_PROFILE];
 	r0 = m0;
 	r0 += 4;
 	i2 = r0;
@@ -181,7 +267,7 @@ _bvb_scanline_profile_u8_asm:
 	r2.l = (a0 += r0.l * r7.h) (tfu);
 	b[p1++] = r2;
 .Lp_done:
-	sp += 8;
+	sp += F_LOC;
 	rets = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;

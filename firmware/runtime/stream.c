@@ -117,22 +117,26 @@ L1TEXT int32_t bvb_stream_open(struct bvb_stream *st) {
   for (int32_t j = 0; j < 2; ++j)
     for (int32_t s = 0; s < BVB_DMA_MAX_XFERS; ++s) st->key[j][s] = -1;
 
-  /* Every transfer's largest shape once (later bands only shrink and move by whole rows):
-   * what DMA refuses here, the direct path does instead. */
-  const int32_t n0 = st->rows < b ? st->rows : b;
-  for (int32_t kind = out ? K_OUT : K_IN0; kind <= nin; ++kind) {
-    xfer(st, kind, 0, n0, 0);
-    if (bvb_dma_prepare(st->job[1], 0, &st->x) != 0) return -1;
-  }
   /* Band 0 in, on job 1 (bvb_stream_next builds band k's job in job k & 1 while job
-   * (k - 1) & 1 runs). */
+   * (k - 1) & 1 runs); then the output's largest shape once, on slot 0 of job 0 (prepared again
+   * for band 1; later bands only shrink and move by whole rows). What DMA refuses here,
+   * the direct path does instead. */
+  const int32_t n0 = st->rows < b ? st->rows : b;
   int32_t slot = 0;
   for (int32_t kind = K_IN0; kind <= nin; ++kind) {
     xfer(st, kind, 0, n0, 0);
-    add(st, 1, &slot, kind);
+    if (bvb_dma_prepare(st->job[1], slot, &st->x) != 0) return -1;
+    st->key[1][slot++] = n0 * 4 + kind;
   }
   st->running = 0;
   run(st, 1, slot);
+  if (out) {
+    xfer(st, K_OUT, 0, n0, 0);
+    if (bvb_dma_prepare(st->job[0], 0, &st->x) != 0) {
+      run(st, 1, 0); /* waits for band 0 */
+      return -1;
+    }
+  }
   st->k = 0;
   st->cur_row = st->cur_n = 0;
   st->fly_row = 0;

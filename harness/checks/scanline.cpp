@@ -12,12 +12,17 @@
 namespace bvb {
 namespace {
 
-// Inputs at any alignment, words where the header says so; then one memory when they fit.
-void place_buffers(Checker &ck, CheckCall &c, Rng &rng, bool skew_all_inputs) {
+// Inputs at any alignment, words where the header says so; then one memory when they fit, or
+// for the profile half the calls as the robot runs it (the band in SDRAM, the scratch in L1:
+// the row-band stream, firmware/asm/scanline.S).
+void place_buffers(Checker &ck, CheckCall &c, Rng &rng, bool skew_all_inputs, int streaming_scratch = -1) {
   for (auto &b : c.bufs)
     if (b.role == Role::In || (skew_all_inputs && b.role == Role::Out && b.view.elem == 1))
       b.skew = uint32_t(rng.uniform(0, 3));
-  ck.place_randomly(c);
+  if (streaming_scratch >= 0)
+    ck.place_streaming(c, size_t(streaming_scratch), rng);
+  else
+    ck.place_randomly(c);
 }
 
 CheckCall profile_call(int w, int rows, int stride, std::vector<uint8_t> band, const std::string &case_name) {
@@ -95,7 +100,7 @@ void check_profile(Checker &ck) {
       std::string name = std::to_string(s.w) + " x " + std::to_string(rows) + " rows stride " +
                          std::to_string(ss) + " " + pattern_name(p);
       CheckCall c = profile_call(s.w, rows, ss, make_plane(p, s.w, rows, ss, rng, ck.options().frames_real), name);
-      place_buffers(ck, c, rng, true);
+      place_buffers(ck, c, rng, true, 2);
       ck.add(std::move(c));
     }
   }
@@ -148,7 +153,9 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
   const std::string name = std::to_string(w) + "x" + std::to_string(h);
   if (kernel == "scanline_profile_u8") {
     const int rows = std::min(h / 2, BVB_SCANLINE_MAX_ROWS);
-    return profile_call(w, rows, w, make_plane(Pattern::Noise, w, rows, w, rng, ""), name);
+    CheckCall c = profile_call(w, rows, w, make_plane(Pattern::Noise, w, rows, w, rng, ""), name);
+    c.bufs[2].place = BVB_PLACE_L1B;  // the band in SDRAM, the sums and band buffers in L1
+    return c;
   }
   // The whole image width as the window, half of it as the minimum overlap; p2 is p1 moved
   // by a few pixels with noise, as between two frames of a turning robot.
