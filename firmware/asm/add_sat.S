@@ -5,11 +5,15 @@
  * word accesses and packed byte arithmetic. This kernel exists to exercise the harness, so it
  * keeps the plain byte loop and uses only scratch registers (no saves).
  *
- * Modelled (bfbench bench, --timing bf537, frames in SDRAM through the write-back data cache):
- * 160x120 333,740 (17.4 cycles per pixel against the 1.5 bound), 320x240 1,277,004 (16.6).
- * The 12.4 cycles per pixel over the simulator's own count are SDRAM: each 32-byte line of the
- * three frames costs a line fill (or a dirty write-back) over the 16-bit bus at SCLK = CCLK / 4;
- * the byte loop leaves no time to hide it. */
+ * Frames in SDRAM and the scratch in L1: the smallest user of the row-band stream
+ * (bvb/stream.h): fill the three planes, bvb_stream_open, then per bvb_stream_next band the
+ * same byte loop over the band as one row (contiguous in L1); the direct path otherwise.
+ * Bound: the bus. 2 bytes in and 1 out per pixel at 0.5 byte per core cycle (bvb/dma.h) is
+ * 6 cycles per pixel, above the byte loop's 5 (and the 1.5 of its loads and stores).
+ * Modelled (bfbench bench, --timing bf537, frames in SDRAM, scratch in L1 bank B): 160x120
+ * 130,024 (6.77 per pixel), 320x240 487,294 (6.34); the rest over 6.00 is the stream's per-job
+ * cost and gaps, the last band's compute after its rows arrive, and band 0's start. Before
+ * (frames through the write-back data cache): 333,740 (17.4) / 1,277,004 (16.6). */
 #include "bvb/stream.h"
 
 	.section .l1.text, "ax"

@@ -35,13 +35,21 @@
  * each row or profile). Working set: the profile's 16-bit column sums (scratch, 1.3 KB at 640
  * wide; L1 on hardware); the shift search keeps everything in registers.
  *
- * Modelled (bfbench bench, --timing bf537, frames in SDRAM through the write-back data cache):
- *   profile: 160x120 9,038 (bound 4,000; 1.65x the simulator's count), 320x240 173,889
- *     (bound 15,200; 9.6x): at 320 wide the band's rows are 320 bytes apart and two rows a pass
- *     fall in the same cache sets (a 2-way data cache of 256 sets x 32 bytes, 8 KB a way), so
- *     lines are filled again and again; at 160 the band fits the cache.
- *   shift: 160x120 18,050 (1.38x), 320x240 55,042 (1.55x): the profiles are small and stay in
- *     the data cache after their first lines; the rest is those fills. */
+ * Modelled (bfbench bench, --timing bf537):
+ *   profile, frames in SDRAM, scratch in L1 bank B: the band's rows come in by memory DMA
+ *     through the row-band stream (bvb/stream.h; 16 rows a band at widths up to 384), the sum
+ *     pass runs on each band in L1. Bound: the bus, 1 byte per pixel at 0.5 byte per core
+ *     cycle (bvb/dma.h), 2.0 cycles per pixel, above the sum pass's 0.375, plus the
+ *     normalising pass after the last row (2.5 per column). 160x120 23,327 (bound 19,600),
+ *     320x240 82,659 (bound 77,600), 640x480 319,841; the rest: band 0 before the sums start,
+ *     the last band's sums after its rows arrive, the stream's per-job cost. Before (frames
+ *     through the data cache): 9,038 at 160x120, with the 9.6 KB band still in the data cache
+ *     from the monitor's copy into SDRAM (a camera frame never is), and 173,889 at 320x240,
+ *     where two rows a pass fall in the same sets of the 2-way cache and lines were filled
+ *     again and again.
+ *   shift: 160x120 18,050 (1.38x the simulator's count), 320x240 55,042 (1.55x): the profiles
+ *     are small and stay in the data cache after their first lines; the rest is those fills.
+ *     Bound: the SAA rate (the bus, 2 w bytes once, is far below it). */
 
 	.section .rodata
 	.align 4

@@ -24,12 +24,19 @@
  * source words that hold the row's bytes, so the loop's read-ahead wraps instead of reading
  * past the row. Buffers may live in SDRAM or L1; the kernel needs no working memory.
  *
- * Modelled (bfbench bench, --timing bf537, frames in SDRAM through the write-back data cache):
- * 160x120 288,570 (15.0 cycles per pixel against the 0.75 bound), 320x240 1,041,129 (13.6),
- * 19.9x and 18.0x the simulator's own count. The loop's 0.75 cycles per pixel are there; the
- * rest is SDRAM, 3 bytes per pixel through 32-byte line fills and write-backs over the 16-bit
- * bus at SCLK = CCLK / 4 (at least 6 cycles per pixel of bus time at the bus's full rate). The
- * kernel takes no L1 working memory, so it cannot bring rows in by DMA ahead of use. */
+ * The DMA path (frames in SDRAM, scratch in L1: bvb/stream.h). Row bands come into L1 by
+ * memory DMA and the grey rows leave the same way, double-buffered, through the shared stream
+ * routines; each band, contiguous in L1, is converted as one long row. Other placements (and
+ * what DMA refuses: the scratchpad) take the direct path above.
+ * Bound: the bus, not the core. 2 bytes in and 1 out per pixel at 0.5 byte per core cycle
+ * (bvb/dma.h: 2 bytes per SCLK, CCLK:SCLK = 4) is 6 cycles per pixel, against the loop's 0.75.
+ * Modelled (bfbench bench, --timing bf537, frames in SDRAM, scratch in L1 bank B):
+ *   160x120 119,969 (6.25 per pixel), 320x240 474,689 (6.18), 640x480 1,893,779 (6.17); the
+ *   simulator's own count 23,194 / 84,634. Over the bus's 6.00: the stream's per-job cost
+ *   (10 SCLK to start, 7 per descriptor, 2 per transfer), the gap between a job's end and the
+ *   next start (the wait's poll and 5 MMR writes at SCLK), and band 0 set up before the stream
+ *   starts. Before the DMA path (frames read and written through the data cache): 288,570
+ *   (15.0) / 1,041,129 (13.6). */
 #include "bvb/stream.h"
 
 	.section .l1.text, "ax"
