@@ -204,8 +204,9 @@ struct bvb_odo_params {
 };
 
 /* The kernels one build calls. */
-/* fast holds the LK pyramid as well while it stays within this (L1 data bank B has 24 KB). */
-#define BVB_ODO_FAST_MAX 16384u
+/* fast holds the LK pyramid and the Harris strips while it stays within this (L1 data bank B
+ * has 24 KB above its stack; the guard bands the checks put around it take 128 bytes). */
+#define BVB_ODO_FAST_MAX 24320u
 
 struct bvb_odo_kernels {
   void (*profile)(const uint8_t *src, int32_t width, int32_t rows, int32_t stride, uint8_t *profile,
@@ -262,6 +263,14 @@ int32_t bvb_pipe_odometry_c(const uint8_t *frame, int32_t width, int32_t height,
 int32_t bvb_pipe_odometry_asm(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,
                               const struct bvb_pipe_frame *info, const struct bvb_odo_params *p,
                               uint8_t *state, struct bvb_pipe_result *out, void *work, void *fast);
+
+/* Stages 6 and 7's candidates over strips of kr response rows (kr >= 1, 5 <= hreg): the
+ * same list as ops->harris_nms over ops->harris_response's whole map of the hreg rows at src.
+ * save: 2 rows, buf: kr + 4 rows of width int32; hscr, nmsscr: the kernels' scratch. The
+ * pipeline's own, exported for the host tests. */
+int32_t bvb_odo_harris_strips(const struct bvb_odo_kernels *ops, const uint8_t *src, int32_t width,
+                              int32_t hreg, int32_t stride, int32_t kr, int32_t threshold, int32_t *cand,
+                              void *hscr, void *nmsscr, int32_t *save, int32_t *buf);
 
 /* The fixed-point trigonometry, exported for the host tests. */
 void bvb_odo_sincos(int32_t angle_q16deg, int32_t *cos_q30, int32_t *sin_q30);
