@@ -1,5 +1,5 @@
 // The odometry pipeline's fixed-point trigonometry (CORDIC) against the C library's doubles,
-// and its parameter checks.
+// its parameter checks, and its Harris strips against the whole response map.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,6 +7,7 @@
 #include <cstring>
 #include <vector>
 
+#include "bvb/harris.h"
 #include "bvb/pipe_odometry.h"
 
 namespace {
@@ -70,7 +71,41 @@ TEST(OdometryParams, FloorRegionStartsWhereTheFloorIsMaxRangeAway) {
   const double t = 10 * kPi / 180, yn = (4 * std::cos(t) - 24 * std::sin(t)) / (24 * std::cos(t) + 4 * std::sin(t));
   EXPECT_EQ(bvb_pipe_odometry_floor_y0(160, 120, 160, &p), int(std::ceil(59.5 + 140 * yn)));
   EXPECT_GT(bvb_pipe_odometry_state_bytes(160, 120, 160, &p), uint32_t(160 * 120));
-  EXPECT_GT(bvb_pipe_odometry_work_bytes(160, 120, 160, &p), uint32_t(4 * 160 * (120 - 59)));
+  // The response map of the floor region lives in strips in fast (L1), not in work.
+  EXPECT_LE(bvb_pipe_odometry_fast_bytes(160, 120, 160, &p), BVB_ODO_FAST_MAX);
+  EXPECT_GT(bvb_pipe_odometry_work_bytes(160, 120, 160, &p), 0u);
+}
+
+// Strips of every height give the whole map's candidates, in its order: corners straddle the
+// strips' seams (blocks of 3 to 9 pixels with noise; threshold 0 keeps every maximum).
+TEST(OdometryHarrisStrips, SameCandidatesAsTheWholeMap) {
+  bvb_odo_kernels ops{};
+  ops.harris_response = bvb_harris_response_c;
+  ops.harris_nms = bvb_harris_nms_c;
+  uint32_t seed = 12345;
+  auto rnd = [&seed]() { return (seed = seed * 1103515245u + 12345u) >> 16; };
+  const int sizes[][3] = {{160, 61, 163}, {37, 9, 40}, {16, 5, 16}, {48, 23, 48}};
+  for (const auto &sz : sizes) {
+    const int w = sz[0], hreg = sz[1], stride = sz[2];
+    std::vector<uint8_t> img(size_t(stride) * hreg);
+    const int bw = 3 + int(rnd() % 7);
+    for (int y = 0; y < hreg; ++y)
+      for (int x = 0; x < stride; ++x)
+        img[size_t(y) * stride + x] = uint8_t((((x / bw) ^ (y / bw)) & 1) * 160 + rnd() % 64);
+    std::vector<uint8_t> hscr(BVB_HARRIS_SCRATCH_BYTES(w)), nscr(BVB_HARRIS_NMS_SCRATCH_BYTES(w));
+    std::vector<int32_t> map(size_t(w) * hreg), want(2 * size_t(BVB_HARRIS_NMS_CAPACITY(w, hreg)) + 2);
+    bvb_harris_response_c(img.data(), map.data(), w, hreg, stride, w, hscr.data());
+    int32_t n = 0;
+    bvb_harris_nms_c(map.data(), w, hreg, w, 0, want.data(), &n, nscr.data());
+    ASSERT_GT(n, w >= 48 ? 20 : 0);
+    for (int kr = 1; kr <= hreg - 4; ++kr) {
+      std::vector<int32_t> got(want.size(), 0), save(2 * size_t(w)), buf(size_t(kr + 4) * w);
+      const int32_t m = bvb_odo_harris_strips(&ops, img.data(), w, hreg, stride, kr, 0, got.data(), hscr.data(),
+                                              nscr.data(), save.data(), buf.data());
+      ASSERT_EQ(m, n) << w << "x" << hreg << " strips of " << kr;
+      for (int i = 0; i < 2 * n; ++i) ASSERT_EQ(got[size_t(i)], want[size_t(i)]) << w << "x" << hreg << " strips of " << kr << " entry " << i;
+    }
+  }
 }
 
 TEST(OdometryParams, OutOfRangeIsRejectedWithoutWriting) {

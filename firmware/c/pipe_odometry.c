@@ -137,12 +137,19 @@ struct odo_setup {
   /* state offsets */
   uint32_t s_table, s_profile, s_frame, s_pyr, s_total;
   /* work offsets */
-  uint32_t x_profile, x_bins, x_pscratch, x_result, x_curve, x_pyr, x_lkin, x_lkout, x_lkscr, x_points,
+  uint32_t x_profile, x_bins, x_pscratch, x_result, x_curve, x_pyr, x_points,
       x_nres, x_nscr, x_map, x_pairs, x_d, x_e, x_sort, x_resp, x_cand, x_corners, x_total;
-  /* fast offsets */
-  uint32_t f_job, f_hscr, f_nmsscr, f_pyr, f_total;
+  /* fast offsets: the job, then the tracker's buffers (f_lk*) and this frame's pyramid, and
+   * over the same bytes later the Harris stages' (f_hscr .. f_strip) */
+  uint32_t f_job, f_lkin, f_lkout, f_lkscr, f_hscr, f_nmsscr, f_save, f_strip, f_pyr, f_total;
   int32_t pyr_fast;            /* this frame's pyramid in fast (f_pyr), else in work (x_pyr) */
+  int32_t strip_rows;          /* response rows per strip in fast (f_strip); 0: the whole map in
+                                * work (x_resp) */
 };
+
+/* Fewest response rows per strip worth the per-call costs (each strip brings 4 image rows more
+ * than it makes and copies 2 response rows back and forth); below it the map goes to work. */
+#define STRIP_MIN_ROWS 8
 
 static int32_t in_range(int32_t v, int32_t lo, int32_t hi) { return v >= lo && v <= hi; }
 
@@ -249,9 +256,6 @@ static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_par
   s->x_result = o, o += 16;
   s->x_curve = o, o += 4 * (2 * (uint32_t)s->shift_range + 1);
   s->x_pyr = o, o += s->pyr_bytes;
-  s->x_lkin = o, o += 8 * M;
-  s->x_lkout = o, o += 4 * BVB_LK_OUT_WORDS * M;
-  s->x_lkscr = o, o += BVB_LK_SCRATCH_BYTES;
   s->x_points = o, o += 4 * M;
   s->x_nres = o, o += 8 * M;
   s->x_nscr = o, o += ALIGN4(BVB_NCC_SCRATCH_SIZE(p->ncc_radius, p->ncc_search));
@@ -260,20 +264,44 @@ static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_par
   s->x_d = o, o += 4 * M;
   s->x_e = o, o += 4 * M;
   s->x_sort = o, o += 4 * M;
-  s->x_resp = o, o += 4 * W * (uint32_t)s->hreg;
+  const uint32_t x_rest = o;
+  o = 0;
+  s->f_job = o, o += BVB_ODO_COPY_JOB_BYTES;
+  /* The tracker's features, results and scratch. */
+  s->f_lkin = o;
+  s->f_lkout = s->f_lkin + 8 * M;
+  s->f_lkscr = s->f_lkout + 4 * BVB_LK_OUT_WORDS * M;
+  const uint32_t lk_end = s->f_lkscr + BVB_LK_SCRATCH_BYTES;
+  /* The pyramid after them while fast stays within BVB_ODO_FAST_MAX (160x120: 11 KB so far):
+   * the tracker reads it there, and its copy into the state leaves L1 by DMA. */
+  s->f_pyr = lk_end;
+  s->pyr_fast = lk_end + s->pyr_bytes <= BVB_ODO_FAST_MAX;
+  const uint32_t lk_total = s->pyr_fast ? lk_end + s->pyr_bytes : lk_end;
+  /* Then, from the job on, over the same bytes (the pyramid is in the state by then): the
+   * Harris scratch, the NMS scratch, two saved response rows and a strip of response rows as
+   * tall as the rest of BVB_ODO_FAST_MAX allows (160x120: 20 rows), which the NMS reads in L1
+   * (the map never goes to SDRAM, where each of its lines would cost a fill); strips of fewer
+   * than STRIP_MIN_ROWS are not worth their calls, and the map goes to work. */
+  s->f_hscr = o, o += ALIGN4(BVB_HARRIS_SCRATCH_BYTES(W));
+  s->f_nmsscr = o, o += ALIGN4(BVB_HARRIS_NMS_SCRATCH_BYTES(W));
+  s->f_save = o, o += 8 * W;
+  s->f_strip = o;
+  {
+    const uint32_t rowb = 4 * W, most = (uint32_t)s->hreg - 4;
+    const uint32_t room = o + 5 * rowb <= BVB_ODO_FAST_MAX ? BVB_ODO_FAST_MAX - o : 0;
+    uint32_t k = room / rowb >= 5 ? room / rowb - 4 : 0;
+    if (k > most) k = most;
+    if (k < STRIP_MIN_ROWS && k < most) k = 0;
+    s->strip_rows = (int32_t)k;
+    o = k ? o + (k + 4) * rowb : s->f_save;
+  }
+  s->f_total = o > lk_total ? o : lk_total;
+  o = x_rest;
+  s->x_resp = o;
+  if (!s->strip_rows) o += 4 * W * (uint32_t)s->hreg;
   s->x_cand = o, o += 8 * ((uint32_t)BVB_HARRIS_NMS_CAPACITY(w, s->hreg) + 1);
   s->x_corners = o, o += 12 * M;
   s->x_total = o;
-  o = 0;
-  s->f_job = o, o += BVB_ODO_COPY_JOB_BYTES;
-  s->f_hscr = o, o += ALIGN4(BVB_HARRIS_SCRATCH_BYTES(W));
-  s->f_nmsscr = o, o += ALIGN4(BVB_HARRIS_NMS_SCRATCH_BYTES(W));
-  /* The pyramid too while fast stays within 16 KB (160x120: 13 KB): the tracker reads it
-   * there, and its copy into the state leaves L1 by DMA. */
-  s->f_pyr = o;
-  s->pyr_fast = o + s->pyr_bytes <= BVB_ODO_FAST_MAX;
-  if (s->pyr_fast) o += s->pyr_bytes;
-  s->f_total = o;
   s->ok = 1;
 }
 
@@ -427,12 +455,12 @@ static int32_t ncc_peak(int32_t sm, int32_t s0, int32_t sp) {
  * in pos (4 int32 per feature). Returns the count. */
 static int32_t track(const struct bvb_odo_kernels *ops, const struct bvb_odo_params *p, const struct odo_setup *s,
                      const struct odo_state *st, const uint8_t *prev, const uint8_t *prev_pyr,
-                     const uint8_t *frame, const uint8_t *pyr, uint8_t *x, int32_t *pos) {
+                     const uint8_t *frame, const uint8_t *pyr, uint8_t *x, uint8_t *fx, int32_t *pos) {
   const int32_t n = st->nfeat, w = s->w, h = s->h, stride = s->stride;
   int32_t k = 0;
   if (n == 0) return 0;
   if (p->tracker == BVB_ODO_TRACK_LK) {
-    int32_t *in = (int32_t *)(x + s->x_lkin), *out = (int32_t *)(x + s->x_lkout);
+    int32_t *in = (int32_t *)(fx + s->f_lkin), *out = (int32_t *)(fx + s->f_lkout);
     struct bvb_lk_params lp;
     lp.levels = p->lk_levels;
     lp.win_w = lp.win_h = p->lk_win;
@@ -442,7 +470,7 @@ static int32_t track(const struct bvb_odo_kernels *ops, const struct bvb_odo_par
     lp.flags = 0;
     lp.count = n;
     for (int32_t i = 0; i < 2 * n; ++i) in[i] = st->feat[i];
-    ops->lk_track(prev, prev_pyr, frame, pyr, w, h, stride, &lp, in, out, x + s->x_lkscr);
+    ops->lk_track(prev, prev_pyr, frame, pyr, w, h, stride, &lp, in, out, fx + s->f_lkscr);
     for (int32_t i = 0; i < n; ++i) {
       const int32_t *o = out + BVB_LK_OUT_WORDS * i;
       if (o[2] != BVB_LK_TRACKED) continue;
@@ -506,6 +534,47 @@ static void copy_both(void *job, uint8_t *dst, const uint8_t *src, uint32_t n, u
 }
 
 static void copy_none(void) {}
+
+/* The state update's copies by the core: this frame and its pyramid. */
+static void copy_state(const struct odo_setup *s, uint8_t *prev, const uint8_t *frame, uint8_t *prev_pyr,
+                       const uint8_t *pyr, int32_t lk) {
+  for (int32_t r = 0; r < s->h; ++r) copy_bytes(prev + r * s->stride, frame + r * s->stride, (uint32_t)s->w);
+  if (lk) copy_words(prev_pyr, pyr, s->pyr_bytes);
+}
+
+/* Stages 6 and 7 over strips of the floor region's response map in fast, each made and then
+ * scanned while in L1: the same candidates, in the same order, as bvb_harris_nms over the
+ * whole map. A strip whose first row is region row y0 holds R(y0) .. R(y0 + K + 3), K =
+ * strip_rows: bvb_harris_response over image rows y0 .. y0 + K + 3 makes R(y0 + 2) .. R(y0 +
+ * K + 1) exactly as over the whole region (each response row needs the image rows 2 either
+ * side), and writes its own two border rows of zeros either side; the two above are then
+ * R(y0), R(y0 + 1) saved from the strip before (zeros, as the region's border is, for the
+ * first). The NMS of rows 1 .. K (y0 + 1 .. y0 + K) reads rows 0 .. K + 1; the last strip
+ * ends at the region's last row, whose two border rows are the region's own, and scans to
+ * its end. Returns the candidates, keys in region rows. */
+int32_t bvb_odo_harris_strips(const struct bvb_odo_kernels *ops, const uint8_t *src, int32_t w, int32_t hreg,
+                              int32_t stride, int32_t kr, int32_t threshold, int32_t *cand, void *hscr,
+                              void *nmsscr, int32_t *save, int32_t *buf) {
+  int32_t n = 0;
+  for (int32_t y0 = 0;; y0 += kr) {
+    const int32_t last = y0 + kr + 4 >= hreg, rows = last ? hreg - y0 : kr + 4;
+    ops->harris_response(src + y0 * stride, buf, w, rows, stride, w, hscr);
+    if (y0 > 0) copy_words((uint8_t *)buf, (const uint8_t *)save, 8 * (uint32_t)w);
+    int32_t c = 0;
+    ops->harris_nms(buf, w, last ? rows : kr + 2, w, threshold, cand + 2 * n, &c, nmsscr);
+    for (int32_t i = n; i < n + c; ++i) cand[2 * i] += y0 << 16;
+    n += c;
+    if (last) return n;
+    copy_words((uint8_t *)save, (const uint8_t *)(buf + kr * w), 8 * (uint32_t)w);
+  }
+}
+
+static int32_t harris_strips(const struct bvb_odo_kernels *ops, const struct bvb_odo_params *p,
+                             const struct odo_setup *s, const uint8_t *src, uint8_t *fx, int32_t *cand) {
+  return bvb_odo_harris_strips(ops, src, s->w, s->hreg, s->stride, s->strip_rows, p->harris_threshold, cand,
+                               fx + s->f_hscr, fx + s->f_nmsscr, (int32_t *)(fx + s->f_save),
+                               (int32_t *)(fx + s->f_strip));
+}
 
 /* What one frame computes before it is committed to the state. */
 struct odo_frame {
@@ -641,23 +710,38 @@ int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *
   if (lk) ops->lk_pyramid(frame, w, h, stride, p->lk_levels, pyr);
   if (++k >= stages) goto done;
   /* 4: the previous frame's features tracked into this one */
-  if (!first) f.tracked = track(ops, p, &s, st, prev, prev_pyr, frame, pyr, x, (int32_t *)(x + s.x_pairs));
+  if (!first) f.tracked = track(ops, p, &s, st, prev, prev_pyr, frame, pyr, x, fx, (int32_t *)(x + s.x_pairs));
   if (++k >= stages) goto done;
+  /* A full run copies this frame and its pyramid into the state once the tracker, the last to
+   * read the previous ones, is done: with Harris strips (they overwrite the pyramid in fast)
+   * now, the copy overlapping stage 5, else after the response, overlapping the NMS and the
+   * selection. */
+  const int32_t full = stages >= BVB_ODO_STAGES, early = full && stride % 4 == 0;
+  const int32_t copy_first = full && s.strip_rows;
+  if (copy_first) {
+    if (early)
+      ops->copy(fx + s.f_job, prev, frame, (uint32_t)(stride * h), prev_pyr, pyr, lk ? s.pyr_bytes : 0);
+    else
+      copy_state(&s, prev, frame, prev_pyr, pyr, lk);
+  }
   /* 5: translation and pose */
   if (!first) estimate(p, &s, st, x, &f);
+  if (copy_first && early) ops->copy_wait();
   if (++k >= stages) goto done;
   /* 6, 7: Harris corners of the floor region, for the next frame */
-  ops->harris_response(frame + s.floor_y0 * stride, (int32_t *)(x + s.x_resp), w, s.hreg, stride, w, fx + s.f_hscr);
-  if (++k >= stages) goto done;
-  /* A full run copies this frame and its pyramid into the state now (the tracker, the last to
-   * read the previous ones, is done), the copy overlapping the NMS and the selection. */
-  const int32_t early = stages >= BVB_ODO_STAGES && stride % 4 == 0;
-  if (early) ops->copy(fx + s.f_job, prev, frame, (uint32_t)(stride * h), prev_pyr, pyr, lk ? s.pyr_bytes : 0);
-  {
-    int32_t *cand = (int32_t *)(x + s.x_cand), count = 0;
-    ops->harris_nms((int32_t *)(x + s.x_resp), w, s.hreg, w, p->harris_threshold, cand, &count, fx + s.f_nmsscr);
-    f.ncorners = bvb_harris_select_c(cand, count, p->max_features, p->min_distance, corners);
+  int32_t *cand = (int32_t *)(x + s.x_cand), count = 0;
+  if (s.strip_rows) {
+    count = harris_strips(ops, p, &s, frame + s.floor_y0 * stride, fx, cand);
+  } else {
+    ops->harris_response(frame + s.floor_y0 * stride, (int32_t *)(x + s.x_resp), w, s.hreg, stride, w,
+                         fx + s.f_hscr);
   }
+  if (++k >= stages) goto done;
+  if (early && !copy_first)
+    ops->copy(fx + s.f_job, prev, frame, (uint32_t)(stride * h), prev_pyr, pyr, lk ? s.pyr_bytes : 0);
+  if (!s.strip_rows)
+    ops->harris_nms((int32_t *)(x + s.x_resp), w, s.hreg, w, p->harris_threshold, cand, &count, fx + s.f_nmsscr);
+  f.ncorners = bvb_harris_select_c(cand, count, p->max_features, p->min_distance, corners);
   if (++k >= stages) goto done;
   /* 8: commit: the pose, the fusion window, the key profile, this frame as the previous one */
   if (first) {
@@ -702,11 +786,11 @@ int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *
     st->feat[2 * i + 1] = (corners[3 * i + 1] + s.floor_y0) * Q16;
   }
   st->nfeat = f.ncorners;
-  if (early) {
-    ops->copy_wait();
-  } else {
-    for (int32_t r = 0; r < h; ++r) copy_bytes(prev + r * stride, frame + r * stride, (uint32_t)w);
-    if (lk) copy_words(prev_pyr, pyr, s.pyr_bytes);
+  if (!copy_first) {
+    if (early)
+      ops->copy_wait();
+    else
+      copy_state(&s, prev, frame, prev_pyr, pyr, lk);
   }
   ++k;
 

@@ -118,11 +118,14 @@
  *   pose (has_pose = 1, x_q16, y_q16 in inches, heading_q16 in degrees, counter-clockwise, not
  *   wrapped), decision BVB_PIPE_STOP (this pipeline steers nothing), diag BVB_ODO_DIAG_*.
  *   work: bvb_pipe_odometry_work_bytes() bytes, 4-byte aligned, any contents (SDRAM: the
- *   response map alone is 4 bytes per pixel of the floor region). fast:
+ *   response map, 4 bytes per pixel of the floor region, when it does not go in strips through
+ *   fast). fast:
  *   bvb_pipe_odometry_fast_bytes() bytes, 4-byte aligned, any contents: the working rows that
- *   want L1 data SRAM (the Harris response's and the NMS's scratch: there the assembly
- *   response streams the frame through L1 by DMA, bvb/harris.h; and this frame's LK pyramid
- *   while the whole stays within BVB_ODO_FAST_MAX bytes). Returns
+ *   want L1 data SRAM, one after the other: the tracker's features and scratch with this
+ *   frame's LK pyramid, then the Harris response's and the NMS's scratch (there the assembly
+ *   response streams the frame through L1 by DMA, bvb/harris.h) with strips of the response
+ *   map (bvb_odo_harris_strips: 20 rows at 160x120), each scanned by the NMS while in L1; the
+ *   pyramid and the strips while the whole stays within BVB_ODO_FAST_MAX bytes. Returns
  *   BVB_PIPE_STOP, or -1 when the parameters are out of range (nothing written).
  *   Limits (else -1): 16 <= width, height <= 1024, width <= stride <= 4096; 1 <= fx, fy <= 1024
  *   px; cam_height 1/16..64 in; tilt -45..45 deg; 1 <= band_rows <= 256 inside the frame; the
@@ -132,8 +135,9 @@
  *   lk_max_iter 1..100; ncc_radius 1..5, ncc_search 1..16; tpi 1..65536 ticks per inch,
  *   wheelbase 1/16..256 in, fuse_window >= 1.
  *   Working set with the harness's defaults: state 26,948 bytes at 160x120 (the previous frame
- *   and its pyramid; 104,412 at 320x240), work 96,004 bytes (304,064; the Harris response of
- *   the floor region is most of it); both in SDRAM. */
+ *   and its pyramid; 104,412 at 320x240), work 48,804 bytes (295,904, where the Harris
+ *   response of the floor region is most of it); both in SDRAM; fast 23,792 bytes (13,552 at
+ *   320x240: no pyramid, the response map in work). */
 #ifndef BVB_PIPE_ODOMETRY_H
 #define BVB_PIPE_ODOMETRY_H
 
@@ -150,7 +154,8 @@
 
 /* Stages (info->stages = k > 0 stops after k; diag[0] says how many ran): 1 profile and angle
  * bins, 2 rotation (shift search, fusion), 3 LK pyramid, 4 tracking, 5 floor motion,
- * translation and pose, 6 Harris response, 7 NMS and selection, 8 commit (the state: pose, key
+ * translation and pose, 6 Harris response (and the NMS, when the map goes in strips through
+ * fast), 7 NMS and selection, 8 commit (the state: pose, key
  * profile, features, this frame and its pyramid). A call stopped early leaves the state as it
  * was (except frame 0's bin table, always the same). */
 #define BVB_ODO_STAGES 8
@@ -204,8 +209,9 @@ struct bvb_odo_params {
 };
 
 /* The kernels one build calls. */
-/* fast holds the LK pyramid as well while it stays within this (L1 data bank B has 24 KB). */
-#define BVB_ODO_FAST_MAX 16384u
+/* fast holds the LK pyramid and the Harris strips while it stays within this (L1 data bank B
+ * has 24 KB above its stack; the guard bands the checks put around it take 128 bytes). */
+#define BVB_ODO_FAST_MAX 24320u
 
 struct bvb_odo_kernels {
   void (*profile)(const uint8_t *src, int32_t width, int32_t rows, int32_t stride, uint8_t *profile,
@@ -262,6 +268,14 @@ int32_t bvb_pipe_odometry_c(const uint8_t *frame, int32_t width, int32_t height,
 int32_t bvb_pipe_odometry_asm(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,
                               const struct bvb_pipe_frame *info, const struct bvb_odo_params *p,
                               uint8_t *state, struct bvb_pipe_result *out, void *work, void *fast);
+
+/* Stages 6 and 7's candidates over strips of kr response rows (kr >= 1, 5 <= hreg): the
+ * same list as ops->harris_nms over ops->harris_response's whole map of the hreg rows at src.
+ * save: 2 rows, buf: kr + 4 rows of width int32; hscr, nmsscr: the kernels' scratch. The
+ * pipeline's own, exported for the host tests. */
+int32_t bvb_odo_harris_strips(const struct bvb_odo_kernels *ops, const uint8_t *src, int32_t width,
+                              int32_t hreg, int32_t stride, int32_t kr, int32_t threshold, int32_t *cand,
+                              void *hscr, void *nmsscr, int32_t *save, int32_t *buf);
 
 /* The fixed-point trigonometry, exported for the host tests. */
 void bvb_odo_sincos(int32_t angle_q16deg, int32_t *cos_q30, int32_t *sin_q30);
