@@ -3,8 +3,12 @@
  * Cycles (bfbench bench: 32 points on a grid, r = 5 (11x11), s = 8 (289 candidates each), frame 2
  * = frame 1 (uniform noise) moved by (3, -2) plus noise; frames in SDRAM, scratch in L1 bank A).
  * Modelled BF537 cycles (--timing bf537) per call:
- *   160x120: 752,531 = 81.4 per candidate; 320x240: 752,728 = 81.4; 640x480: 753,238 (bound
- *   60.5; the issue's target is 80). Before memory DMA: 789,535 = 85.4 and 837,089 = 90.5.
+ *   160x120: 748,491 = 80.9 per candidate; 320x240: 748,298 = 80.9; 640x480: 748,806 (bound
+ *   60.5; the issue's target is 80, 739,840). Before the grouped selection sweep (below) and
+ *   the radius-5-first MAC dispatch: 752,531, 752,728, 753,238; before memory DMA: 789,535 =
+ *   85.4 and 837,089 = 90.5. The per-cause split that follows was measured before the sweep
+ *   change: the sweep now tests 4 pairs in 10 single-load issues (was 3 issues and a
+ *   sub-bank collision per pair), so its collisions are gone; the DMA bookkeeping remains.
  *   With memory DMA (below) no point's pixels are read through the data cache, so the count no
  *   longer depends on the frame size. Where the 752,531 go at 160x120 (from the model's
  *   per-cause totals, --timing-report, of the bench's run with this code against the one
@@ -32,7 +36,8 @@
  *   bytes, already in L1, into the spare He, Ho), into the set the next point does not use,
  *   and waited for before the next MAC pass: ~3,500 cycles of DMA under ~18,000 of MACs. The
  *   first point's job is waited for at once, the second's runs during the first's passes.
- * Simulator cycles per call (--timing none): 738,970 at 160x120 (the simulator's untimed DMA
+ * Simulator cycles per call (--timing none): 739,940 at 160x120 (738,970 before the sweep
+ *   change; where the extra issues go has not been profiled) (the simulator's untimed DMA
  *   is waited for by polling; before memory DMA 725,345 = 78.4 per candidate); C at -O2:
  *   14,228,829 = 1538.6 per candidate.
  * Lower bound: a candidate is 121 multiply-accumulates and the two MAC units do two a cycle, so
@@ -41,7 +46,8 @@
  * (121 cycles per pair) and at 67 cycles for each candidate of the last column: 61.2 cycles per
  * candidate on average. The other 17 go to, per point (r = 5, s = 8): pass 1 ~1650 cycles,
  * pass 2 ~790, template ~610, selection sweep ~570, exact v, score and threshold (isqrt,
- * divisions) ~620, the copy program ~200, calls and taken branches ~500.
+ * divisions) ~620, the copy program ~200, calls and taken branches ~500 (the sweep's ~570
+ * before it was grouped: now ~420 with no collisions).
  * Data dependence: the selection's threshold rejects almost every pair of candidates in three
  * cycles on textured scenes. On smooth real scenes many windows correlate well with the
  * template at many offsets, and each of those costs an exact comparison (~200 cycles): on the
@@ -487,8 +493,8 @@ _ncc_layout:
 	r6 *= r4;
 	r6 = r6 << 3;
 	r7 = r7 + r6;
+	[p5 + CTX_NS] = r7;  /* right after NP: the selection sweeps both as one array */
 	r7 += 4;
-	[p5 + CTX_NS] = r7;
 	r6 = r4 << 1;
 	r6 += 2;
 	r6 = r6 << 2;
@@ -569,8 +575,8 @@ _ncc_layout:
 	r0 *= r4;
 	r0 = r0 << 3;
 	r7 = r7 + r0;
-	r7 += 4;
 	[p5 + CTX_NS] = r7;
+	r7 += 4;
 	r0 = r4 << 1;
 	r0 += 2;
 	r0 = r0 << 2;
@@ -1587,8 +1593,10 @@ _ncc_mac\r:
 .Lmc\r\()_cols:
 	MAC_COLUMNS \r, .Lmc\r, 0
 .Lmc\r\()_last:
+	/* the last pair's A1 result (R7) is stored after the last column, whose first (empty)
+	 * store lands in its place: so NS follows NP with no gap */
 	[i3++] = r6;
-	[i3++] = r7;
+	p0 = [p5 + CTX_NS];
 	/* the last column */
 	r0 = [p5 + CTX_TP];
 	i0 = r0;
@@ -1608,6 +1616,7 @@ _ncc_mac\r:
 	SINGLE_BODY \r, .Lms\r\()_1
 	[i3++] = r6;
 	[i3++] = r6;         /* d = 2s+1 repeats 2s */
+	[p0 + -4] = r7;
 	l0 = 0;
 	rts;
 	.endm
@@ -1621,7 +1630,11 @@ _ncc_mac\r:
 	.align 4
 _ncc_macpass:
 	r0 = [p5 + CTX_R];
-	r1 = 1;
+	r1 = 5;
+	cc = r0 == r1;
+	if !cc jump 1f;      /* the robot's radius first: a taken branch costs 9 cycles unhinted */
+	jump.l _ncc_mac5;
+1:	r1 = 1;
 	cc = r0 == r1;
 	if !cc jump 2f;
 	jump.l _ncc_mac1;
@@ -2036,8 +2049,9 @@ _ncc_num:
 
 /* ------------------------------------------------------------------------------------------- */
 /* Selection. The best starts as the candidate at the previous point's offset (features of one
- * frame tend to move alike); then every pair of candidates is tested against tau in three
- * cycles, and only a pair that reaches it gets the exact comparison (_ncc_consider). */
+ * frame tend to move alike); then every group of four pairs of candidates is tested against
+ * tau in ten cycles, and only a candidate that reaches it gets the exact comparison
+ * (_ncc_consider). */
 	.align 4
 _ncc_select:
 	[--sp] = rets;
@@ -2080,168 +2094,192 @@ _ncc_select:
 	r5 = r5 + r0;
 	[p5 + CTX_BKEY] = r5;
 	call _ncc_tau;
-	/* every pair of the column pairs, in one loop per segment: first from the seed's column
-	 * pair to the last, then from the first to the seed's (a good best early keeps tau high);
-	 * the flagged pair is two behind the loads */
-	r0 = 8;
-	m0 = r0;
-	r0 = [p5 + CTX_NP];
-	[p5 + CTX_T15] = r0;
+	/* every numerator, NP's pairs then NS's singles as one array of words (NS follows NP), in
+	 * two segments: first from the seed's column pair to the end, then from the start to
+	 * there (a good best early keeps tau high) */
 	r2 = [p5 + CTX_S];
 	r1 = r2 << 1;
 	r1 += 1;             /* 2s+1 */
+	r6 = r1;
+	r6 *= r2;
+	r6 = r6 << 1;        /* words of the pairs, 2s(2s+1) */
+	[p5 + CTX_T16] = r6;
+	r7 = r2 << 1;
+	r7 += 2;
+	r7 = r7 + r6;        /* all words: then NS's 2s+2 */
 	r4 = [p5 + CTX_BE];
 	r4 >>= 1;
 	r5 = r2;
 	r5 += -1;
 	r4 = min(r4, r5);
-	r4 *= r1;            /* the seed's column pair, its first pair */
+	r4 *= r1;
+	r4 = r4 << 1;        /* the seed's column pair's first word */
+	r5 = r7 - r4;
+	r3 = 7;
+	r5 = r5 & r3;
+	r4 = r4 + r5;        /* moved on so that the first segment is whole groups of 8 words */
 	[p5 + CTX_SEGB] = r4;
-	r1 *= r2;
-	r1 = r1 - r4;
-	p1 = r1;             /* pairs from there to the end */
-	r4 = r4 << 3;
-	r0 = r0 + r4;
-	i0 = r0;
-	r0 += 4;
-	i1 = r0;
-	r3 = [p5 + CTX_TAU];
-	mnop || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
-	cc = r3 < r3;
-	lsetup (.Ls_p0, .Ls_p1) lc0 = p1;
-.Ls_p0:
-	if cc jump .Ls_slow;
-.Ls_back:
-	r2 = max(r0, r1) || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
-.Ls_p1:
-	cc = r3 <= r2;
-	if !cc jump .Ls_segb (bp);
-	call .Ls_pair;
-.Ls_segb:
+	r0 = r4;
+	r1 = r7 - r4;
+	call .Ls_sweep;
+	r0 = 0;
 	r1 = [p5 + CTX_SEGB];
-	cc = r1 == 0;
-	if cc jump .Ls_singles;
-	p1 = r1;             /* the pairs before the seed's column pair */
-	r0 = [p5 + CTX_NP];
-	i0 = r0;
-	r0 += 4;
-	i1 = r0;
-	r3 = [p5 + CTX_TAU];
-	mnop || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
-	cc = r3 < r3;
-	lsetup (.Ls_r0, .Ls_r1) lc0 = p1;
-.Ls_r0:
-	if cc jump .Ls_slowr;
-.Ls_backr:
-	r2 = max(r0, r1) || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
-.Ls_r1:
-	cc = r3 <= r2;
-	if !cc jump .Ls_singles (bp);
-	call .Ls_pair;
-.Ls_singles:
-	/* the last column: num of rows (2k, 2k+1) side by side */
-	r0 = [p5 + CTX_NS];
-	[p5 + CTX_T15] = r0;
-	i0 = r0;
-	r0 += 4;
-	i1 = r0;
-	r0 = [p5 + CTX_S];
-	r0 += 1;
-	p1 = r0;
-	mnop || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
-	cc = r3 < r3;
-	lsetup (.Ls_q0, .Ls_q1) lc0 = p1;
-.Ls_q0:
-	if cc jump .Ls_slow1;
-.Ls_back1:
-	r2 = max(r0, r1) || r0 = [i0 ++ m0] || r1 = [i1 ++ m0];
-.Ls_q1:
-	cc = r3 <= r2;
-	if !cc jump .Ls_end (bp);
-	call .Ls_single;
-.Ls_end:
+	call .Ls_sweep;
 	rets = [sp++];
 	rts;
-.Ls_slow:
-	call .Ls_pair;
-	jump .Ls_back;
-.Ls_slow1:
-	call .Ls_single;
-	jump .Ls_back1;
-.Ls_slowr:
-	call .Ls_pair;
-	jump .Ls_backr;
-/* The flagged pair's index is (I0 - base) / 8 - 2; for the column pairs it is p*(2s+1) + d.
- * Keeps R0, R1, I0, I1, M0 and the sweep's loop registers; reloads R3 = tau. */
-.Ls_pair:
+
+/* .Ls_sweep: R0 = the first word, R1 = words: groups of 8 words (4 pairs) against tau in ten
+ * issues, one load each (the words of a pair share a sub-bank: a dual load would cost the same
+ * cycle again), then the last words one at a time in three. A group or word that reaches tau
+ * is looked at word by word (.Ls_group, .Ls_word); the flagged group is twelve words behind
+ * the loads, the flagged word one. */
+.Ls_sweep:
+	[--sp] = rets;
+	r2 = [p5 + CTX_NP];
+	r0 = r0 << 2;
+	r0 = r0 + r2;        /* the first word's address */
+	i0 = r0;
+	r2 = 7;
+	r2 = r2 & r1;
+	[p5 + CTX_T17] = r2; /* words after the groups */
+	r1 >>= 3;
+	r2 = r1 << 5;
+	r0 = r0 + r2;
+	[p5 + CTX_T18] = r0; /* their address */
+	p1 = r1;
+	r3 = [p5 + CTX_TAU];
+	cc = r1 == 0;
+	if cc jump .Lsw_rest;
+	r0 = [i0++];
+	r1 = [i0++];
+	r4 = [i0++];
+	r5 = [i0++];
+	cc = r3 < r3;
+	lsetup (.Lsw_g0, .Lsw_g1) lc0 = p1;
+.Lsw_g0:
+	if cc jump .Lsw_gslow;
+.Lsw_gback:
+	r2 = max(r0, r1) || r0 = [i0++] || nop;
+	r6 = max(r4, r5) || r1 = [i0++] || nop;
+	r2 = max(r2, r6) || r4 = [i0++] || nop;
+	r6 = max(r0, r1) || r5 = [i0++] || nop;
+	r2 = max(r2, r6) || r0 = [i0++] || nop;
+	r6 = max(r4, r5) || r1 = [i0++] || nop;
+	r2 = max(r2, r6) || r4 = [i0++] || nop;
+	mnop || r5 = [i0++] || nop;
+.Lsw_g1:
+	cc = r3 <= r2;
+	if !cc jump .Lsw_rest (bp);
+	call .Ls_group;
+.Lsw_rest:
+	r0 = [p5 + CTX_T17];
+	p1 = r0;
+	cc = r0 == 0;
+	if cc jump .Lsw_out;
+	r0 = [p5 + CTX_T18];
+	i0 = r0;
+	cc = r3 < r3;
+	lsetup (.Lsw_w0, .Lsw_w1) lc0 = p1;
+.Lsw_w0:
+	if cc jump .Lsw_wslow;
+.Lsw_wback:
+	r2 = [i0++];
+.Lsw_w1:
+	cc = r3 <= r2;
+	if !cc jump .Lsw_out (bp);
+	call .Ls_oneword;
+.Lsw_out:
+	rets = [sp++];
+	rts;
+.Lsw_gslow:
+	call .Ls_group;
+	jump .Lsw_gback;
+.Lsw_wslow:
+	call .Ls_oneword;
+	jump .Lsw_wback;
+
+/* The flagged group (I0 - 48), two words at a time. Keeps R0, R1, R4, R5 (the next group's
+ * first words), I0 and the sweep's loop registers; returns R3 = tau. */
+.Ls_group:
 	[--sp] = rets;
 	[--sp] = r0;
 	[--sp] = r1;
+	[--sp] = r4;
+	[--sp] = r5;
 	r0 = i0;
-	r5 = [p5 + CTX_T15];
-	r0 = r0 - r5;
-	r0 >>= 3;
-	r0 += -2;
-	r4 = r0 << 3;
-	r4 = r4 + r5;
-	p0 = r4;
-	r2 = [p0 + 4];
-	[p5 + CTX_T18] = r2;
-	r2 = [p0];
-	[p5 + CTX_T19] = r2;
-	[p5 + CTX_T17] = r0;
-	r1 = [p5 + CTX_RECIP];
-	r0 = r0.l * r1.l (is);
-	r0 >>= 16;           /* p = index / (2s+1), exact for index < 2^16 / (2s+1) */
-	r1 = [p5 + CTX_S];
-	r1 = r1 << 1;
-	r1 += 1;
-	r1 *= r0;
-	r2 = [p5 + CTX_T17];
-	r1 = r2 - r1;        /* d */
-	r0 = r0 << 1;        /* e of the pair's first */
-	[p5 + CTX_T16] = r0;
-	[p5 + CTX_T17] = r1;
-	r2 = [p5 + CTX_T19];
-	call _ncc_consider;
-	r0 = [p5 + CTX_T16];
-	r0 += 1;
-	r1 = [p5 + CTX_T17];
-	r2 = [p5 + CTX_T18];
-	call _ncc_consider;
-	jump .Ls_ret;
-.Ls_single:
-	[--sp] = rets;
-	[--sp] = r0;
+	r0 += -48;
+	p3 = r0;
+	r0 += 32;
+	p4 = r0;             /* the group's end (P3, P4 survive _ncc_consider) */
+.Lgr_l:
+	r0 = [p3++];
+	r1 = [p3++];
+	r2 = max(r0, r1);
+	cc = r3 <= r2;
+	if !cc jump .Lgr_n (bp);
+	cc = r3 <= r0;
+	if !cc jump .Lgr_b;
 	[--sp] = r1;
-	r4 = i0;
-	r5 = [p5 + CTX_T15];
-	r4 = r4 - r5;
-	r4 >>= 3;
-	r4 += -2;
-	r4 = r4 << 1;        /* d of the first */
-	[p5 + CTX_T17] = r4;
-	r4 = r4 << 2;
-	r4 = r4 + r5;
-	p0 = r4;
-	r2 = [p0 + 4];
-	[p5 + CTX_T18] = r2;
-	r2 = [p0];
-	r0 = [p5 + CTX_S];
-	r0 = r0 << 1;
-	r1 = [p5 + CTX_T17];
-	call _ncc_consider;
-	r0 = [p5 + CTX_S];
-	r0 = r0 << 1;
-	r1 = [p5 + CTX_T17];
-	r1 += 1;
-	cc = r0 < r1;        /* d = 2s+1 only repeats d = 2s */
-	if cc jump .Ls_ret;
-	r2 = [p5 + CTX_T18];
-	call _ncc_consider;
-.Ls_ret:
+	r2 = r0;
+	r0 = p3;
+	r0 += -8;
+	call .Ls_word;
+	r1 = [sp++];
+.Lgr_b:
+	cc = r3 <= r1;
+	if !cc jump .Lgr_n;
+	r2 = r1;
+	r0 = p3;
+	r0 += -4;
+	call .Ls_word;
+.Lgr_n:
+	cc = p3 < p4 (iu);
+	if cc jump .Lgr_l (bp);
+	r5 = [sp++];
+	r4 = [sp++];
 	r1 = [sp++];
 	r0 = [sp++];
+	rets = [sp++];
+	rts;
+
+/* The flagged word (I0 - 4, its num in R2). Returns R3 = tau. */
+.Ls_oneword:
+	r0 = i0;
+	r0 += -4;
+/* .Ls_word: R0 = a word's address, R2 = its num: the exact comparison for its candidate. Word
+ * q < 2s(2s+1) is lane q & 1 of pair q >> 1 = p*(2s+1) + d (e = 2p + lane); word 2s(2s+1) + d
+ * is (2s, d), where d = 2s+1 only repeats 2s. Returns R3 = tau. */
+.Ls_word:
+	[--sp] = rets;
+	r1 = [p5 + CTX_NP];
+	r0 = r0 - r1;
+	r0 >>= 2;            /* the word's index */
+	r1 = [p5 + CTX_T16];
+	cc = r0 < r1;
+	if !cc jump .Lwd_single;
+	r4 = r0 >> 1;        /* the pair */
+	r5 = [p5 + CTX_RECIP];
+	r5 = r4.l * r5.l (is);
+	r5 >>= 16;           /* p = pair / (2s+1), exact for pair < 2^16 / (2s+1) */
+	r6 = [p5 + CTX_S];
+	r6 = r6 << 1;
+	r6 += 1;
+	r6 *= r5;
+	r1 = r4 - r6;        /* d */
+	r5 = r5 << 1;
+	cc = bittst(r0, 0);
+	r0 = cc;
+	r0 = r0 + r5;        /* e */
+	call _ncc_consider;
+	jump .Lwd_out;
+.Lwd_single:
+	r1 = r0 - r1;        /* d */
+	r0 = [p5 + CTX_S];
+	r0 = r0 << 1;        /* e = 2s */
+	cc = r0 < r1;
+	if cc jump .Lwd_out;
+	call _ncc_consider;
+.Lwd_out:
 	r3 = [p5 + CTX_TAU];
 	rets = [sp++];
 	rts;
