@@ -15,6 +15,13 @@
 
 namespace bvb {
 
+CheckCall bench_call_for(const std::string &kernel, Size size, uint32_t seed) {
+  const Family *f = family_of(kernel);
+  if (!f || !f->bench_call) return {};
+  Rng rng(seed ^ (uint64_t(size.w) << 20) ^ uint64_t(size.h));
+  return f->bench_call(kernel, size.w, size.h, rng);
+}
+
 std::vector<BenchRow> run_bench(const Target &target, const BenchOptions &opts) {
   // Each measured call in a simulator run of its own: its cycles must not depend on -j, -k or
   // the calls measured before it (caches and SDRAM rows carry over within a run).
@@ -37,8 +44,7 @@ std::vector<BenchRow> run_bench(const Target &target, const BenchOptions &opts) 
       for (Size s : opts.sizes) {
         // Sizes the budgets name for other kernels may be below this one's minimum.
         if (!bench_size_problem(k, s.w, s.h).empty()) continue;
-        Rng rng(opts.seed ^ (uint64_t(s.w) << 20) ^ uint64_t(s.h));
-        CheckCall c = f->bench_call(k, s.w, s.h, rng);
+        CheckCall c = bench_call_for(k, s, opts.seed);
         if (c.kernel.empty()) continue;
         BenchRow r;
         r.kernel = k;

@@ -43,6 +43,10 @@ const char *place_name(uint32_t place);
 // Every buffer's place: the one name when all agree, else "name:PLACE ...".
 std::string placement_of(const std::vector<Buffer> &bufs);
 
+// The call the bench measures for a kernel at a size (its family's bench call, with the random
+// stream bench draws it from); an empty kernel name when the family has none.
+CheckCall bench_call_for(const std::string &kernel, Size size, uint32_t seed);
+
 std::vector<BenchRow> run_bench(const Target &target, const BenchOptions &opts);
 std::string bench_table(const std::vector<BenchRow> &rows, uint32_t null_call_cycles);
 std::string bench_json(const std::vector<BenchRow> &rows, uint32_t null_call_cycles);

@@ -211,6 +211,9 @@ void decode_result(const Call &c, const std::vector<uint32_t> &offsets, uint32_t
   }
 }
 
+
+}  // namespace
+
 std::string make_temp_file() {
   const char *tmpdir = std::getenv("TMPDIR");
   std::string tmpl = std::string(tmpdir && *tmpdir ? tmpdir : "/tmp") + "/bfbench-window-XXXXXX";
@@ -222,8 +225,6 @@ std::string make_temp_file() {
   register_temp_file(pathbuf.data());  // removed if bfbench is interrupted
   return pathbuf.data();
 }
-
-}  // namespace
 
 Target::Target(FirmwareImage image, std::string simulator)
     : image_(std::move(image)), simulator_(std::move(simulator)), timing_(default_timing()) {}
@@ -268,6 +269,9 @@ void Target::run_window(const std::vector<const Call *> &calls,
   sim::RunSpec spec;
   spec.simulator = simulator_;
   spec.options = {"--timing", timing_};
+  for (const auto &[impl, opts] : impl_options_)
+    if (std::any_of(calls.begin(), calls.end(), [impl = impl](const Call *c) { return c->impl == impl; }))
+      spec.options.insert(spec.options.end(), opts.begin(), opts.end());
   spec.elf = image_.elf;
   spec.maps.push_back({path, BVB_WINDOW_ADDR, l.size});
   // A generous floor for slow machines: the simulator runs well over 5 M cycles per second.

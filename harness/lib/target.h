@@ -117,6 +117,9 @@ class Target {
   void set_isolated(bool on) { isolated_ = on; }
   // The empty call's cycles as another Target (a copy of this one) measured them.
   void take_null_call_cycles(const Target &from) const { null_call_cycles_ = from.null_call_cycles_; }
+  // Further simulator options for the runs of calls of one implementation (bfbench profile's
+  // --timing-profile for the call it profiles, not for the reference it is checked with).
+  void set_impl_options(uint32_t impl, std::vector<std::string> options) { impl_options_[impl] = std::move(options); }
   static constexpr uint32_t kDefaultCycleLimit = 300000000;
 
  private:
@@ -128,6 +131,7 @@ class Target {
   bool isolated_ = false;
   mutable uint32_t null_call_cycles_ = 0;
   std::map<uint32_t, uint32_t> arena_override_;
+  std::map<uint32_t, std::vector<std::string>> impl_options_;
 };
 
 // One simulator process serving a sequence of calls of one shape (BVB_SERVE in the window): a
@@ -147,6 +151,10 @@ class Session {
   struct Impl;
   Impl *impl_;
 };
+
+// A new temporary file (in $TMPDIR, else /tmp), removed if bfbench is interrupted; the caller
+// removes it with remove_temp_file (cleanup.h).
+std::string make_temp_file();
 
 // Default paths baked in at build time; BFBENCH_FIRMWARE / BFBENCH_SELFTEST_FIRMWARE override.
 FirmwareImage product_firmware();

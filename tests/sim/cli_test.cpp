@@ -17,6 +17,7 @@
 
 #include "bvb/add_sat.h"
 #include "io.h"
+#include "json.h"
 #include "tempdir.h"
 
 namespace bvb {
@@ -274,6 +275,100 @@ TEST(Cli, SimulatorKilledFromOutsideIsNotBlamedOnTheKernel) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2) << err.str();
   EXPECT_NE(err.str().find("killed from outside"), std::string::npos) << err.str();
+}
+
+// bfbench profile: the profile accounts for every cycle of the call bench measures, and no more.
+std::string slurp_file(const std::string &p) {
+  std::ifstream f(p, std::ios::binary);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+uint64_t num(const json::Value &v, const std::string &key) {
+  const json::Value *x = v.get(key);
+  return x ? uint64_t(x->num) : ~0ull;
+}
+
+uint64_t cause_sum(const json::Value &v) {
+  uint64_t s = 0;
+  for (const auto &kv : v.get("causes")->obj) s += uint64_t(kv.second.num);
+  return s;
+}
+
+TEST(Profile, AccountsForEveryCycleTheBenchMeasures) {
+  const std::string j = dir() + "prof.json", csv = dir() + "prof.csv";
+  CliRun r = bfbench("profile add_sat_u8 --size 64x48 --json " + j);
+  ASSERT_EQ(r.status, 0) << r.err;
+  json::Value p = json::parse(slurp_file(j), j);
+  const uint64_t measured = num(p, "measured_cycles"), total = num(p, "profile_cycles");
+  ASSERT_GT(measured, 0u);
+  EXPECT_EQ(measured + num(p, "call_overhead"), total);
+  EXPECT_EQ(num(p, "issue_cycles") + cause_sum(p), total);
+  uint64_t insn_cycles = 0, insn_count = 0;
+  for (const auto &in : p.get("instructions")->arr) {
+    insn_cycles += num(in, "cycles");
+    insn_count += num(in, "count");
+    EXPECT_EQ(num(in, "cycles"), num(in, "count") + cause_sum(in)) << in.get("pc")->str;
+  }
+  EXPECT_EQ(insn_cycles, total);
+  EXPECT_EQ(insn_count, num(p, "issue_cycles"));
+  // The kernel's own lines are there, with the assembly source's text.
+  bool asm_line = false;
+  for (const auto &l : p.get("lines")->arr)
+    asm_line |= l.get("file")->str.find("firmware/asm/add_sat.S") != std::string::npos &&
+                !l.get("source")->str.empty() && num(l, "cycles") > 0;
+  EXPECT_TRUE(asm_line);
+  ASSERT_FALSE(p.get("loops")->arr.empty());
+  EXPECT_GT(num(p.get("loops")->arr[0], "issue_bound"), 0u);
+  // The same call as the bench's: the same cycles.
+  CliRun b = bfbench("bench -k add_sat_u8 --size 64x48 --asm-only --csv " + csv);
+  ASSERT_EQ(b.status, 0) << b.err;
+  std::string c = slurp_file(csv);
+  EXPECT_NE(c.find("," + std::to_string(measured) + ","), std::string::npos)
+      << "profile measured " << measured << ", bench:\n" << c;
+}
+
+TEST(Profile, RefusesWhatItCannotProfile) {
+  CliRun none = bfbench("profile no_such_kernel");
+  EXPECT_EQ(none.status, 2) << none.err;
+  CliRun c_only = bfbench("profile blobs_uyvy --size 32x16");
+  EXPECT_EQ(c_only.status, 2);
+  EXPECT_NE(c_only.err.find("no assembly"), std::string::npos) << c_only.err;
+  CliRun plain = bfbench("profile add_sat_u8 --timing none");
+  EXPECT_EQ(plain.status, 2);
+  EXPECT_NE(plain.err.find("bf537"), std::string::npos) << plain.err;
+}
+
+// The page renders in a browser: headless Chromium runs its script, and the DOM it dumps has a
+// row per profiled source line, the hottest in the strongest red.
+TEST(Profile, PageShowsTheAnnotatedSourceInABrowser) {
+  const char *browser = nullptr;
+  for (const char *b : {"/usr/bin/chromium", "/usr/bin/chromium-browser"})
+    if (access(b, X_OK) == 0) browser = b;
+  if (!browser) GTEST_SKIP() << "no Chromium (apt-get install chromium): the page is not checked";
+  const std::string j = dir() + "page.json", h = dir() + "page.html", dom = dir() + "page.dom";
+  CliRun r = bfbench("profile add_sat_u8 --size 64x48 --json " + j + " --html " + h);
+  ASSERT_EQ(r.status, 0) << r.err;
+  json::Value p = json::parse(slurp_file(j), j);
+  const size_t lines = p.get("lines")->arr.size();
+  uint64_t hottest = 0;
+  for (const auto &l : p.get("lines")->arr) hottest = std::max(hottest, num(l, "cycles"));
+  const std::string cmd = std::string(browser) +
+                          " --headless --no-sandbox --disable-gpu --dump-dom file://" + h + " >" + dom +
+                          " 2>/dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const std::string d = slurp_file(dom);
+  EXPECT_NE(d.find("data-rendered=\"" + std::to_string(lines) + "\""), std::string::npos) << d.substr(0, 2000);
+  size_t rows = 0;
+  for (size_t k = 0; (k = d.find("<tr class=\"line\"", k)) != std::string::npos; ++k) ++rows;
+  EXPECT_EQ(rows, lines);
+  // The hottest line carries the most intense colour: alpha 0.08 + 0.72 (as the browser writes it).
+  const std::string hot = "data-cycles=\"" + std::to_string(hottest) + "\"";
+  size_t at = d.find(hot);
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_NE(d.substr(at, 200).find("0.8)"), std::string::npos) << d.substr(at, 200);
+  EXPECT_NE(d.find("add_sat_u8 (asm)"), std::string::npos);
 }
 
 }  // namespace
