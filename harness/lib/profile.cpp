@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cinttypes>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -189,7 +190,7 @@ std::vector<std::pair<uint32_t, Disassembly>> parse_objdump(const std::string &t
       if (sp != std::string::npos) tail.resize(sp);
       uint64_t ln;
       if (to_u64(tail, &ln)) {
-        file = line.substr(0, colon);
+        file = std::filesystem::path(line.substr(0, colon)).lexically_normal().string();
         src_line = int(ln);
       }
       continue;
@@ -291,14 +292,17 @@ Profile build_profile(const ProfileData &data, const std::vector<std::pair<uint3
     for (const auto &o : p.loops) dup |= o.start == lp.start && o.end == lp.end;
     if (dup) continue;
     lp.cause.assign(data.causes.size(), 0);
-    // Issue bound: the body's instructions, one cycle each (a bundle is one instruction).
     for (auto it = std::lower_bound(dis.begin(), dis.end(), lp.start,
                                     [](const auto &e, uint32_t v) { return e.first < v; });
          it != dis.end() && it->first <= lp.end; ++it)
-      lp.issue_bound++;
+      lp.body++;
+    // Issue bound: one cycle per instruction issued (a bundle is one), what the body would
+    // take per iteration without a stall or a multi-cycle instruction.
+    uint64_t issued = 0;
     for (const auto &r : data.records)
       if (r.pc >= lp.start && r.pc <= lp.end) {
         lp.cycles += r.cycles;
+        issued += r.count;
         for (size_t i = 0; i < r.cause.size(); ++i) lp.cause[i] += r.cause[i];
       }
     // Iterations: how often the body's last instruction ran (a backward branch runs once per
@@ -306,6 +310,7 @@ Profile build_profile(const ProfileData &data, const std::vector<std::pair<uint3
     auto e = by_pc.find(lp.end);
     lp.iterations = e == by_pc.end() ? 0 : e->second->count;
     if (!lp.iterations || !lp.cycles) continue;
+    lp.issue_bound = double(issued) / double(lp.iterations);
     if (const Disassembly *d = find_dis(lp.start))
       lp.where = d->file.empty() ? d->function : d->file + ":" + std::to_string(d->line);
     p.loops.push_back(std::move(lp));
@@ -415,8 +420,8 @@ std::string profile_text(const Profile &p, size_t top_lines) {
     if (shown++ == 10) break;
     double per = double(l.cycles) / double(l.iterations);
     o << "  " << (l.hw ? "hw loop " : "loop    ") << short_file(l.where) << "  " << with_commas(l.iterations)
-      << " iterations, " << fmt("%.2f", per) << " cycles each, bound " << l.issue_bound << " ("
-      << fmt("%.2f", per / std::max(1, l.issue_bound)) << "x), " << fmt("%.1f", 100.0 * double(l.cycles) / double(p.total))
+      << " iterations, " << fmt("%.2f", per) << " cycles each, issue bound " << fmt("%.2f", l.issue_bound)
+      << " (" << fmt("%.2fx", per / std::max(1e-9, l.issue_bound)) << ", " << l.body << " instructions), " << fmt("%.1f", 100.0 * double(l.cycles) / double(p.total))
       << "% of the call; stalls: " << cause_summary(p.causes, l.cause) << "\n";
   }
   if (p.loops.empty()) o << "  (none)\n";
@@ -429,8 +434,8 @@ std::string profile_text(const Profile &p, size_t top_lines) {
     std::string src = l.source;
     while (!src.empty() && (src[0] == ' ' || src[0] == '\t')) src.erase(0, 1);
     if (src.size() > 60) src = src.substr(0, 57) + "...";
-    o << "  " << fmt("%5.1f%%", 100.0 * double(l.cycles) / double(p.total)) << " "
-      << with_commas(l.cycles) << "  " << short_file(l.file) << ":" << l.line << "  " << src
+      o << "  " << fmt("%5.1f%%", 100.0 * double(l.cycles) / double(p.total)) << " " << with_commas(l.cycles)
+      << " cycles, " << with_commas(l.count) << "x  " << short_file(l.file) << ":" << l.line << "  " << src
       << "  [" << cause_summary(p.causes, l.cause) << "]\n";
   }
   return o.str();
@@ -454,7 +459,8 @@ std::string profile_json(const Profile &p) {
     o << (i ? ",\n    " : "\n    ") << "{\"start\": \"0x" << hex32(l.start) << "\", \"end\": \"0x" << hex32(l.end)
       << "\", \"hardware\": " << (l.hw ? "true" : "false") << ", \"where\": " << json::quote(short_file(l.where))
       << ", \"iterations\": " << l.iterations << ", \"cycles\": " << l.cycles
-      << ", \"issue_bound\": " << l.issue_bound << ", \"causes\": " << arr(l.cause) << "}";
+      << ", \"body_instructions\": " << l.body << ", \"issue_bound\": " << fmt("%.4f", l.issue_bound)
+      << ", \"causes\": " << arr(l.cause) << "}";
   }
   o << "],\n  \"lines\": [";
   for (size_t i = 0; i < p.lines.size(); ++i) {
@@ -497,7 +503,7 @@ std::string profile_html(const Profile &p) {
        "const fmt = n => n.toLocaleString('en-US');\n"
        "const pct = n => (100 * n / P.profile_cycles).toFixed(1) + '%';\n"
        "const stalls = c => Object.entries(c).filter(e => e[1] > 0).map(e => e[0] + ' ' + fmt(e[1])).join(', ');\n"
-       "function cell(tr, text, cls) { const td = document.createElement(tr.tagName === 'THEAD' ? 'th' : 'td');\n"
+       "function cell(tr, text, cls) { const td = document.createElement(tr.className === 'head' ? 'th' : 'td');\n"
        "  td.textContent = text; if (cls) td.className = cls; tr.appendChild(td); return td; }\n"
        "function row(t, cells, cls) { const tr = document.createElement('tr'); if (cls) tr.className = cls;\n"
        "  cells.forEach(c => cell(tr, c[0], c[1])); t.appendChild(tr); return tr; }\n"
@@ -506,11 +512,11 @@ std::string profile_html(const Profile &p) {
        "  P.timing + '; the profile counts ' + fmt(P.profile_cycles) + ' with the ' + P.call_overhead +\n"
        "  '-cycle call overhead): issue ' + fmt(P.issue_cycles) + ', ' + stalls(P.causes);\n"
        "const L = document.getElementById('loops');\n"
-       "row(L, [['where', 'src'], ['iterations'], ['cycles'], ['cycles/iteration'], ['issue bound'], ['of call'], ['stalls', 'src']]);\n"
+       "row(L, [['where', 'src'], ['iterations'], ['cycles'], ['cycles/iteration'], ['issue bound'], ['of call'], ['stalls', 'src']], 'head');\n"
        "P.loops.forEach(l => row(L, [[l.where, 'src'], [fmt(l.iterations)], [fmt(l.cycles)],\n"
-       "  [(l.cycles / l.iterations).toFixed(2)], [l.issue_bound], [pct(l.cycles)], [stalls(l.causes), 'src']], 'loop'));\n"
+       "  [(l.cycles / l.iterations).toFixed(2)], [l.issue_bound.toFixed(2)], [pct(l.cycles)], [stalls(l.causes), 'src']], 'loop'));\n"
        "const S = document.getElementById('source');\n"
-       "row(S, [['line'], ['count'], ['cycles'], ['of call'], ['source', 'src'], ['stalls', 'src']]);\n"
+       "row(S, [['line'], ['count'], ['cycles'], ['of call'], ['source', 'src'], ['stalls', 'src']], 'head');\n"
        "const max = Math.max(1, ...P.lines.map(l => l.cycles));\n"
        "let file = null;\n"
        "P.lines.forEach(l => {\n"

@@ -55,7 +55,9 @@ struct ProfileLoop {
   bool hw = false;  // a hardware loop (else a loop closed by a backward branch)
   std::string where;  // "file:line" of its first instruction, else the function+offset
   uint64_t iterations = 0, cycles = 0;
-  int issue_bound = 0;  // instructions in the body: its cycles per iteration without any stall
+  int body = 0;           // instructions in the body (inner loops' included once)
+  double issue_bound = 0;  // instructions it issued per iteration (inner loops' iterations
+                           // included): its cycles per iteration without any stall
   std::vector<uint64_t> cause;
 };
 struct ProfileInstruction {
