@@ -6,7 +6,8 @@ build=${BVB_BUILD_DIR:-$root/build}
 log() { printf '[ci] %s\n' "$*" >&2; }
 
 host_packages() {
-  local pkgs=(cmake ninja-build g++ libgtest-dev libgmock-dev) missing=()
+  # chromium: the profile page's test loads it in a headless browser.
+  local pkgs=(cmake ninja-build g++ libgtest-dev libgmock-dev chromium) missing=()
   for p in "${pkgs[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done

@@ -65,7 +65,7 @@ h_loop:
 h_end:
 	NOP;
 	CHECKREG R5, 11;
-	pass
+	dbg_pass
 
 	.data
 	.align 4
