@@ -6,7 +6,7 @@ build=${BVB_BUILD_DIR:-$root/build}
 log() { printf '[ci] %s\n' "$*" >&2; }
 
 host_packages() {
-  local pkgs=(cmake ninja-build g++ libgtest-dev libgmock-dev) missing=()
+  local pkgs=(cmake ninja-build g++ libgtest-dev libgmock-dev libpng-dev) missing=()
   for p in "${pkgs[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done

@@ -366,18 +366,44 @@ int cmd_bench(Args &args) {
   return 0;
 }
 
+// The buffer an --out F.npy writes: the one --out-buffer names, else the call's first output.
+int pick_output_buffer(const CheckCall &call, const std::string &name) {
+  std::string outputs;
+  int first = -1;
+  for (size_t i = 0; i < call.bufs.size(); ++i) {
+    const Buffer &b = call.bufs[i];
+    if (b.role != Role::Out && b.role != Role::InOut) continue;
+    if (first < 0) first = int(i);
+    if (b.name == name) return int(i);
+    outputs += (outputs.empty() ? "" : ", ") + b.name;
+  }
+  if (name.empty() && first >= 0) return first;
+  if (first < 0) throw InputError(call.kernel + " has no output buffer to write as .npy");
+  throw Usage("--out-buffer " + name + ": no such output buffer (this call has " + outputs + ")");
+}
+
 int cmd_run(Args &args) {
   if (help_requested(args,
                      "usage: bfbench run KERNEL --in FILE [--in FILE] --out FILE [--impl asm|c|host]\n"
-                     "                  [--param K=V]... [--size WxH] [--timing none|bf537] [--firmware ELF]\n\n"
-                     "Runs one kernel on the given frames (binary or ASCII PGM/PPM, or raw UYVY with\n"
-                     "--size) and writes its output; prints the cycles of the call (modelled BF537 cycles, or\n"
-                     "the simulator's own with --timing none). --impl defaults to asm, or c for kernels\n"
-                     "without assembly.\n"))
+                     "                  [--param K=V]... [--size WxH] [--grey] [--out-buffer NAME]\n"
+                     "                  [--timing none|bf537] [--firmware ELF]\n\n"
+                     "Runs one kernel on the given frames and writes its output; prints the cycles of the\n"
+                     "call (modelled BF537 cycles, or the simulator's own with --timing none). --impl\n"
+                     "defaults to asm, or c for kernels without assembly.\n"
+                     "Formats follow the file names: frames in and out as .pgm (grey), .ppm (RGB), .pnm,\n"
+                     ".png (8-bit grey or RGB) or .npy (uint8 HxW or HxWx3), raw .uyvy with --size WxH;\n"
+                     "flow out as .flo or .npy (float32 HxWx2); lists out as .csv or .txt. --out F.npy\n"
+                     "writes an output buffer as it is, with its element type and shape (--out-buffer NAME\n"
+                     "picks which; default the first). A name without an extension gets the output's own\n"
+                     "format (PNM, .flo or text), any other extension is an error.\n"
+                     "  --grey           convert colour frames for a kernel of grey frames (BT.601 luma);\n"
+                     "                   without it a colour frame is an error\n"))
     return 0;
   RunRequest req;
   req.inputs = args.values("--in");
   req.output = args.value("--out", "");
+  req.grey_from_colour = args.flag("--grey");
+  const std::string out_buffer = args.value("--out-buffer", "");
   std::string impl = args.value("--impl", "");
   for (const auto &p : args.values("--param")) req.params.set(p);
   auto sizes = parse_sizes(args);
@@ -391,6 +417,10 @@ int cmd_run(Args &args) {
   req.kernel = pos[0];
   if (req.inputs.empty()) throw Usage("run needs --in FILE");
   if (req.output.empty()) throw Usage("run needs --out FILE");
+  // The output's name decides its format: an unknown one is refused before anything runs.
+  const bool as_npy = format_of(req.output) == FileFormat::Npy;
+  if (!out_buffer.empty() && !as_npy) throw Usage("--out-buffer picks the buffer of an --out F.npy");
+  for (const auto &in : req.inputs) format_of(in);
   const KernelInfo &k = Registry::product().get(req.kernel);
   if (impl.empty()) impl = k.has_asm ? "asm" : "c";
   const Family *f = family_of(req.kernel);
@@ -400,12 +430,21 @@ int cmd_run(Args &args) {
       throw InputError("kernel " + req.kernel + " has no assembly implementation (use --impl c)");
   }
   RunPlan plan = f->plan_run(req);
+  check_output_name(req.output, plan.kind);
+  const int npy_buffer = as_npy ? pick_output_buffer(plan.call, out_buffer) : -1;
+  // .npy: the chosen buffer as the kernel left it; otherwise the family's view of the outputs.
+  auto write_output = [&](std::vector<std::vector<uint8_t>> &data) {
+    if (npy_buffer >= 0)
+      write_file_atomic(req.output, encode_npy(npy_of_buffer(plan.call.bufs[size_t(npy_buffer)], data[size_t(npy_buffer)])));
+    else
+      plan.write(data, req.output);
+  };
   std::vector<std::vector<uint8_t>> bufs;
   for (const auto &b : plan.call.bufs) bufs.push_back(b.data);
   if (impl == "host") {
     HostBuffers hb(bufs);
     plan.call.host(hb);
-    plan.write(bufs, req.output);
+    write_output(bufs);
     std::printf("%s host %s: done\n", req.kernel.c_str(), plan.summary.c_str());
     return 0;
   }
@@ -432,7 +471,7 @@ int cmd_run(Args &args) {
     std::fprintf(stderr, "bfbench: %s (%s): %s\n", req.kernel.c_str(), impl.c_str(), err.c_str());
     return 1;
   }
-  plan.write(r.data, req.output);
+  write_output(r.data);
   std::printf("%s %s %s: %u cycles", req.kernel.c_str(), impl.c_str(), plan.summary.c_str(), r.cycles);
   if (plan.call.pixels > 0) std::printf(" (%.2f per pixel)", r.cycles / plan.call.pixels);
   std::printf("\n");

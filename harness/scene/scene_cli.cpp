@@ -24,8 +24,9 @@ const char *kUsage =
     "      enc_noise tpi wheelbase radius block_dist start texture_seed uyvy flow rgb\n"
     "      (meanings and defaults: harness/scene/scene_io.h)\n"
     "DIR gets frame_NNNN.pgm/.uyvy, flow_NNNN.flo, truth.csv, columns.csv, scene.txt, arena.txt;\n"
-    "it is written under a temporary name and renamed when complete. --force replaces an\n"
-    "existing scene directory.\n"
+    "it is written under a temporary name, read back and renamed when complete. --force\n"
+    "replaces an existing scene directory that holds only what a scene writes (anything else\n"
+    "in it is refused, never deleted).\n"
     "Units: inches and degrees; heading counter-clockwise from +x; image x right, y down.\n";
 
 int usage_error(const std::string &msg) {
@@ -47,6 +48,8 @@ int scene_command(int argc, char **argv) {
     };
     if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
+      std::fputs("what each key accepts:\n", stdout);
+      std::fputs(scene_spec_ranges().c_str(), stdout);
       return 0;
     } else if (a == "--spec") {
       if (!value(spec)) return usage_error("--spec needs a value");
