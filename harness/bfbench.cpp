@@ -173,33 +173,6 @@ int cmd_list(Args &args) {
   return 0;
 }
 
-void print_check_report(const Checker &ck, size_t max_per_kernel) {
-  for (const auto &kv : ck.tally()) {
-    std::string line = "  " + kv.first;
-    line.resize(26, ' ');
-    for (const auto &it : kv.second)
-      line += it.first + ": " + std::to_string(it.second.calls - it.second.failed) + "/" +
-              std::to_string(it.second.calls) + " ok   ";
-    std::printf("%s\n", line.c_str());
-  }
-  std::map<std::string, size_t> shown;
-  std::map<std::string, std::pair<std::string, std::string>> hidden_of;  // key -> kernel, impl
-  for (const auto &f : ck.failures()) {
-    const std::string key = f.kernel + " (" + f.impl + ")";
-    if (shown[key]++ >= max_per_kernel) {
-      hidden_of[key] = {f.kernel, f.impl};
-      continue;
-    }
-    std::printf("FAILED %s (%s) %s, seed %u, case %s: %s: %s\n", f.kernel.c_str(), f.impl.c_str(),
-                f.case_name.c_str(), f.seed, f.case_id.c_str(), failure_kind_name(f.kind), f.message.c_str());
-    std::printf("  replay: %s\n", replay_command(f).c_str());
-  }
-  // Say what was left out and how to see it, rather than stopping silently at the first few.
-  for (const auto &kv : hidden_of)
-    std::printf("  ... %zu more failures of %s not shown (-v shows all): bfbench check -k %s --seed %u -v\n",
-                shown[kv.first] - max_per_kernel, kv.first.c_str(), kv.second.first.c_str(), ck.seed());
-}
-
 int cmd_check(Args &args) {
   if (help_requested(args,
                      "usage: bfbench check [-k GLOB] [--seed N] [--seeds COUNT] [-j N] [--campaign]\n"
@@ -253,6 +226,7 @@ int cmd_check(Args &args) {
     throw InputError(frames_missing_message(opts.frames_real));
 
   size_t failures = 0, calls = 0, host_failures = 0;
+  std::map<std::string, Checker::Tally> per_impl;  // Blackfin calls, over every seed
   std::vector<std::string> gaps;
   for (long s = 0; s < seeds; ++s) {
     CheckOptions o = opts;
@@ -267,15 +241,20 @@ int cmd_check(Args &args) {
       ck.flush();
     }
     std::printf("seed %u:\n", o.seed);
-    print_check_report(ck, opts.verbose ? 1000 : 3);
+    std::fputs(format_check_report(ck.tally(), ck.failures(), opts.verbose ? SIZE_MAX : 3, o.seed).c_str(), stdout);
     for (const auto &kv : ck.skipped_real())
       std::printf("  %s: %s\n", kv.first.c_str(), frames_missing_message(o.frames_real).c_str());
     // Calls that failed, not failure records: one call can fail several ways at once. The host
     // reference's runs are judged (its inputs) but are not calls on the Blackfin.
     for (const auto &kv : ck.tally())
       for (const auto &it : kv.second) {
-        if (it.first == "host") host_failures += it.second.failed;
-        else calls += it.second.calls, failures += it.second.failed;
+        if (it.first == "host") {
+          host_failures += it.second.failed;
+        } else {
+          calls += it.second.calls, failures += it.second.failed;
+          per_impl[it.first].calls += it.second.calls;
+          per_impl[it.first].failed += it.second.failed;
+        }
       }
     if (s == 0) gaps = ck.coverage_gaps();
   }
@@ -284,7 +263,7 @@ int cmd_check(Args &args) {
   // names no call).
   for (const auto &g : gaps) std::printf("NOT CHECKED %s: no call judged\n", g.c_str());
   if (failures || host_failures || !gaps.empty()) {
-    if (failures || host_failures) std::printf("%zu of %zu calls failed\n", failures, calls);
+    if (failures) std::printf("%s\n", format_failed_calls(per_impl).c_str());
     if (host_failures) std::printf("%zu host reference runs failed (they wrote their inputs)\n", host_failures);
     if (!gaps.empty()) std::printf("%zu kernel implementations not checked\n", gaps.size());
     return 1;
@@ -621,16 +600,16 @@ int main(int argc, char **argv) {
     if (handled) return rc;
     throw Usage("unknown command '" + cmd + "' (bfbench --help)");
   } catch (const Usage &e) {
-    std::fprintf(stderr, "bfbench: %s\n", e.what());
+    std::fprintf(stderr, "bfbench: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   } catch (const InputError &e) {
-    std::fprintf(stderr, "bfbench: %s\n", e.what());
+    std::fprintf(stderr, "bfbench: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   } catch (const sim::SetupError &e) {
-    std::fprintf(stderr, "bfbench: %s\n", e.what());
+    std::fprintf(stderr, "bfbench: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   } catch (const std::exception &e) {
-    std::fprintf(stderr, "bfbench: internal error: %s\n", e.what());
+    std::fprintf(stderr, "bfbench: internal error: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   }
 }

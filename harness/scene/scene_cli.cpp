@@ -7,6 +7,7 @@
 #include "io.h"
 #include "scene_io.h"
 #include "world.h"
+#include "simdriver.h"
 
 namespace bvb {
 
@@ -30,7 +31,7 @@ const char *kUsage =
     "Units: inches and degrees; heading counter-clockwise from +x; image x right, y down.\n";
 
 int usage_error(const std::string &msg) {
-  std::fprintf(stderr, "scene: %s (try --help)\n", msg.c_str());
+  std::fprintf(stderr, "scene: %s (try --help)\n", sim::printable(msg, 2000).c_str());
   return 2;
 }
 
@@ -93,11 +94,11 @@ int scene_command(int argc, char **argv) {
                 d.camera.height, d.arena.name.c_str());
     return 0;
   } catch (const InputError &e) {
-    std::fprintf(stderr, "scene: %s\n", e.what());
+    std::fprintf(stderr, "scene: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   } catch (const std::exception &e) {
     // Exit 1 means a check failed; a fault of the program is reported as bfbench's main does.
-    std::fprintf(stderr, "scene: internal error: %s\n", e.what());
+    std::fprintf(stderr, "scene: internal error: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   }
 }

@@ -482,3 +482,27 @@ TEST(Formats, NpyWritesAnOutputBufferWithItsTypeAndShape) {
 
 }  // namespace
 }  // namespace bvb
+
+namespace bvb {
+namespace {
+
+// An error names what the user gave, but control characters in it (a terminal escape, a
+// newline in a file name) are shown escaped: the message stays one line and cannot rewrite
+// the terminal.
+TEST(Messages, ControlCharactersInErrorsAreEscaped) {
+  const std::string odd = dir() + "esc\x1b[31m\nname.pgm";
+  write(odd, "P9\n");
+  CliRun r = bfbench("run erode3x3_u8 --impl host --in '" + odd + "' --out " + dir() + "esc_out.pgm");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("esc\\x1b[31m\\x0aname.pgm: not a PGM/PPM file"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  r = bfbench("run \"$(printf '\\007bell')\" --impl host --in " + dir() + "esc_in.pgm --out " + dir() + "esc_out.pgm");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.find('\x07'), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("\\x07bell"), std::string::npos) << r.err;
+  std::remove(odd.c_str());
+}
+
+}  // namespace
+}  // namespace bvb
