@@ -506,3 +506,25 @@ TEST(Messages, ControlCharactersInErrorsAreEscaped) {
 
 }  // namespace
 }  // namespace bvb
+
+namespace bvb {
+namespace {
+
+// scene --force deleted any directory holding a scene.txt, the user's other files and
+// subdirectories with it; now such a directory is refused whole and left as it was.
+TEST(SceneForce, RefusesADirectoryHoldingMoreThanAScene) {
+  const std::string sc = dir() + "force_scene", spec = "--spec path=F1,size=32x24,flow=0 --out " + dir() + "force_scene";
+  std::system(("rm -rf " + sc).c_str());
+  ASSERT_EQ(bfbench("scene " + spec).status, 0);
+  ASSERT_EQ(bfbench("scene " + spec + " --force").status, 0) << "a scene over a scene";
+  write(sc + "/notes.txt", "mine");
+  mkdir((sc + "/keep").c_str(), 0700);
+  write(sc + "/keep/data.bin", "mine too");
+  expect_bad_input("scene " + spec + " --force", "which a scene does not write; not replacing it");
+  EXPECT_EQ(slurp(sc + "/notes.txt"), "mine");
+  EXPECT_EQ(slurp(sc + "/keep/data.bin"), "mine too");
+  EXPECT_TRUE(exists(sc + "/scene.txt"));
+}
+
+}  // namespace
+}  // namespace bvb
