@@ -6,8 +6,9 @@ build=${BVB_BUILD_DIR:-$root/build}
 log() { printf '[ci] %s\n' "$*" >&2; }
 
 host_packages() {
-  # chromium: the profile page's test loads it in a headless browser.
-  local pkgs=(cmake ninja-build g++ libgtest-dev libgmock-dev chromium) missing=()
+  # libpng-dev: .png frames in and out; chromium: the profile page's test loads it in a
+  # headless browser.
+  local pkgs=(cmake ninja-build g++ libgtest-dev libgmock-dev libpng-dev chromium) missing=()
   for p in "${pkgs[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done

@@ -175,33 +175,6 @@ int cmd_list(Args &args) {
   return 0;
 }
 
-void print_check_report(const Checker &ck, size_t max_per_kernel) {
-  for (const auto &kv : ck.tally()) {
-    std::string line = "  " + kv.first;
-    line.resize(26, ' ');
-    for (const auto &it : kv.second)
-      line += it.first + ": " + std::to_string(it.second.calls - it.second.failed) + "/" +
-              std::to_string(it.second.calls) + " ok   ";
-    std::printf("%s\n", line.c_str());
-  }
-  std::map<std::string, size_t> shown;
-  std::map<std::string, std::pair<std::string, std::string>> hidden_of;  // key -> kernel, impl
-  for (const auto &f : ck.failures()) {
-    const std::string key = f.kernel + " (" + f.impl + ")";
-    if (shown[key]++ >= max_per_kernel) {
-      hidden_of[key] = {f.kernel, f.impl};
-      continue;
-    }
-    std::printf("FAILED %s (%s) %s, seed %u, case %s: %s: %s\n", f.kernel.c_str(), f.impl.c_str(),
-                f.case_name.c_str(), f.seed, f.case_id.c_str(), failure_kind_name(f.kind), f.message.c_str());
-    std::printf("  replay: %s\n", replay_command(f).c_str());
-  }
-  // Say what was left out and how to see it, rather than stopping silently at the first few.
-  for (const auto &kv : hidden_of)
-    std::printf("  ... %zu more failures of %s not shown (-v shows all): bfbench check -k %s --seed %u -v\n",
-                shown[kv.first] - max_per_kernel, kv.first.c_str(), kv.second.first.c_str(), ck.seed());
-}
-
 int cmd_check(Args &args) {
   if (help_requested(args,
                      "usage: bfbench check [-k GLOB] [--seed N] [--seeds COUNT] [-j N] [--campaign]\n"
@@ -255,6 +228,7 @@ int cmd_check(Args &args) {
     throw InputError(frames_missing_message(opts.frames_real));
 
   size_t failures = 0, calls = 0, host_failures = 0;
+  std::map<std::string, Checker::Tally> per_impl;  // Blackfin calls, over every seed
   std::vector<std::string> gaps;
   for (long s = 0; s < seeds; ++s) {
     CheckOptions o = opts;
@@ -269,15 +243,20 @@ int cmd_check(Args &args) {
       ck.flush();
     }
     std::printf("seed %u:\n", o.seed);
-    print_check_report(ck, opts.verbose ? 1000 : 3);
+    std::fputs(format_check_report(ck.tally(), ck.failures(), opts.verbose ? SIZE_MAX : 3, o.seed).c_str(), stdout);
     for (const auto &kv : ck.skipped_real())
       std::printf("  %s: %s\n", kv.first.c_str(), frames_missing_message(o.frames_real).c_str());
     // Calls that failed, not failure records: one call can fail several ways at once. The host
     // reference's runs are judged (its inputs) but are not calls on the Blackfin.
     for (const auto &kv : ck.tally())
       for (const auto &it : kv.second) {
-        if (it.first == "host") host_failures += it.second.failed;
-        else calls += it.second.calls, failures += it.second.failed;
+        if (it.first == "host") {
+          host_failures += it.second.failed;
+        } else {
+          calls += it.second.calls, failures += it.second.failed;
+          per_impl[it.first].calls += it.second.calls;
+          per_impl[it.first].failed += it.second.failed;
+        }
       }
     if (s == 0) gaps = ck.coverage_gaps();
   }
@@ -286,7 +265,7 @@ int cmd_check(Args &args) {
   // names no call).
   for (const auto &g : gaps) std::printf("NOT CHECKED %s: no call judged\n", g.c_str());
   if (failures || host_failures || !gaps.empty()) {
-    if (failures || host_failures) std::printf("%zu of %zu calls failed\n", failures, calls);
+    if (failures) std::printf("%s\n", format_failed_calls(per_impl).c_str());
     if (host_failures) std::printf("%zu host reference runs failed (they wrote their inputs)\n", host_failures);
     if (!gaps.empty()) std::printf("%zu kernel implementations not checked\n", gaps.size());
     return 1;
@@ -368,18 +347,44 @@ int cmd_bench(Args &args) {
   return 0;
 }
 
+// The buffer an --out F.npy writes: the one --out-buffer names, else the call's first output.
+int pick_output_buffer(const CheckCall &call, const std::string &name) {
+  std::string outputs;
+  int first = -1;
+  for (size_t i = 0; i < call.bufs.size(); ++i) {
+    const Buffer &b = call.bufs[i];
+    if (b.role != Role::Out && b.role != Role::InOut) continue;
+    if (first < 0) first = int(i);
+    if (b.name == name) return int(i);
+    outputs += (outputs.empty() ? "" : ", ") + b.name;
+  }
+  if (name.empty() && first >= 0) return first;
+  if (first < 0) throw InputError(call.kernel + " has no output buffer to write as .npy");
+  throw Usage("--out-buffer " + name + ": no such output buffer (this call has " + outputs + ")");
+}
+
 int cmd_run(Args &args) {
   if (help_requested(args,
                      "usage: bfbench run KERNEL --in FILE [--in FILE] --out FILE [--impl asm|c|host]\n"
-                     "                  [--param K=V]... [--size WxH] [--timing none|bf537] [--firmware ELF]\n\n"
-                     "Runs one kernel on the given frames (binary or ASCII PGM/PPM, or raw UYVY with\n"
-                     "--size) and writes its output; prints the cycles of the call (modelled BF537 cycles, or\n"
-                     "the simulator's own with --timing none). --impl defaults to asm, or c for kernels\n"
-                     "without assembly.\n"))
+                     "                  [--param K=V]... [--size WxH] [--grey] [--out-buffer NAME]\n"
+                     "                  [--timing none|bf537] [--firmware ELF]\n\n"
+                     "Runs one kernel on the given frames and writes its output; prints the cycles of the\n"
+                     "call (modelled BF537 cycles, or the simulator's own with --timing none). --impl\n"
+                     "defaults to asm, or c for kernels without assembly.\n"
+                     "Formats follow the file names: frames in and out as .pgm (grey), .ppm (RGB), .pnm,\n"
+                     ".png (8-bit grey or RGB) or .npy (uint8 HxW or HxWx3), raw .uyvy with --size WxH;\n"
+                     "flow out as .flo or .npy (float32 HxWx2); lists out as .csv or .txt. --out F.npy\n"
+                     "writes an output buffer as it is, with its element type and shape (--out-buffer NAME\n"
+                     "picks which; default the first). A name without an extension gets the output's own\n"
+                     "format (PNM, .flo or text), any other extension is an error.\n"
+                     "  --grey           convert colour frames for a kernel of grey frames (BT.601 luma);\n"
+                     "                   without it a colour frame is an error\n"))
     return 0;
   RunRequest req;
   req.inputs = args.values("--in");
   req.output = args.value("--out", "");
+  req.grey_from_colour = args.flag("--grey");
+  const std::string out_buffer = args.value("--out-buffer", "");
   std::string impl = args.value("--impl", "");
   for (const auto &p : args.values("--param")) req.params.set(p);
   auto sizes = parse_sizes(args);
@@ -393,6 +398,10 @@ int cmd_run(Args &args) {
   req.kernel = pos[0];
   if (req.inputs.empty()) throw Usage("run needs --in FILE");
   if (req.output.empty()) throw Usage("run needs --out FILE");
+  // The output's name decides its format: an unknown one is refused before anything runs.
+  const bool as_npy = format_of(req.output) == FileFormat::Npy;
+  if (!out_buffer.empty() && !as_npy) throw Usage("--out-buffer picks the buffer of an --out F.npy");
+  for (const auto &in : req.inputs) format_of(in);
   const KernelInfo &k = Registry::product().get(req.kernel);
   if (impl.empty()) impl = k.has_asm ? "asm" : "c";
   const Family *f = family_of(req.kernel);
@@ -402,12 +411,21 @@ int cmd_run(Args &args) {
       throw InputError("kernel " + req.kernel + " has no assembly implementation (use --impl c)");
   }
   RunPlan plan = f->plan_run(req);
+  check_output_name(req.output, plan.kind);
+  const int npy_buffer = as_npy ? pick_output_buffer(plan.call, out_buffer) : -1;
+  // .npy: the chosen buffer as the kernel left it; otherwise the family's view of the outputs.
+  auto write_output = [&](std::vector<std::vector<uint8_t>> &data) {
+    if (npy_buffer >= 0)
+      write_file_atomic(req.output, encode_npy(npy_of_buffer(plan.call.bufs[size_t(npy_buffer)], data[size_t(npy_buffer)])));
+    else
+      plan.write(data, req.output);
+  };
   std::vector<std::vector<uint8_t>> bufs;
   for (const auto &b : plan.call.bufs) bufs.push_back(b.data);
   if (impl == "host") {
     HostBuffers hb(bufs);
     plan.call.host(hb);
-    plan.write(bufs, req.output);
+    write_output(bufs);
     std::printf("%s host %s: done\n", req.kernel.c_str(), plan.summary.c_str());
     return 0;
   }
@@ -434,7 +452,7 @@ int cmd_run(Args &args) {
     std::fprintf(stderr, "bfbench: %s (%s): %s\n", req.kernel.c_str(), impl.c_str(), err.c_str());
     return 1;
   }
-  plan.write(r.data, req.output);
+  write_output(r.data);
   std::printf("%s %s %s: %u cycles", req.kernel.c_str(), impl.c_str(), plan.summary.c_str(), r.cycles);
   if (plan.call.pixels > 0) std::printf(" (%.2f per pixel)", r.cycles / plan.call.pixels);
   std::printf("\n");
@@ -632,16 +650,16 @@ int main(int argc, char **argv) {
     if (handled) return rc;
     throw Usage("unknown command '" + cmd + "' (bfbench --help)");
   } catch (const Usage &e) {
-    std::fprintf(stderr, "bfbench: %s\n", e.what());
+    std::fprintf(stderr, "bfbench: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   } catch (const InputError &e) {
-    std::fprintf(stderr, "bfbench: %s\n", e.what());
+    std::fprintf(stderr, "bfbench: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   } catch (const sim::SetupError &e) {
-    std::fprintf(stderr, "bfbench: %s\n", e.what());
+    std::fprintf(stderr, "bfbench: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   } catch (const std::exception &e) {
-    std::fprintf(stderr, "bfbench: internal error: %s\n", e.what());
+    std::fprintf(stderr, "bfbench: internal error: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   }
 }

@@ -917,3 +917,158 @@ TEST(SceneIo, BundledScenesReproduce) {
 }
 
 }  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// What a spec may say, and what --force may delete
+
+namespace {
+
+// Each key class has a range that says what a scene can mean: inside it parses, just outside
+// it is refused naming the key and the range.
+void expect_refused(const std::string &spec, const std::string &key) {
+  try {
+    parse_scene_spec(spec);
+  } catch (const InputError &e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("scene spec: " + key + ":"), std::string::npos) << spec << ": " << m;
+    EXPECT_NE(m.find("out of range"), std::string::npos) << spec << ": " << m;
+    return;
+  }
+  ADD_FAILURE() << "accepted: " << spec;
+}
+
+TEST(SceneSpecRanges, PathLengthsAndSides) {
+  EXPECT_DOUBLE_EQ(parse_scene_spec("length=1000").length_in, 1000);
+  EXPECT_DOUBLE_EQ(parse_scene_spec("length=-1000").length_in, -1000);
+  expect_refused("length=-100000", "length");
+  expect_refused("length=1001", "length");
+  expect_refused("side=1001", "side");
+  expect_refused("block_dist=1e5", "block_dist");
+}
+
+TEST(SceneSpecRanges, Angles) {
+  EXPECT_DOUBLE_EQ(parse_scene_spec("angle=-3600").angle_deg, -3600);
+  expect_refused("angle=-100000", "angle");
+  expect_refused("turn_rate=91", "turn_rate");
+  expect_refused("tilt=85", "tilt");
+}
+
+TEST(SceneSpecRanges, CameraIntrinsicsAndMounting) {
+  // fx as a multiple of the width, whichever key comes first.
+  EXPECT_DOUBLE_EQ(parse_scene_spec("fx=140,size=160x120").fx, 140);
+  EXPECT_DOUBLE_EQ(parse_scene_spec("size=320x240,fx=6400").fx, 6400);
+  expect_refused("fx=1", "fx");
+  expect_refused("fx=1,size=160x120", "fx");
+  expect_refused("size=160x120,fx=3201", "fx");
+  EXPECT_DOUBLE_EQ(parse_scene_spec("cam_height=36").cam_height_in, 36);
+  expect_refused("cam_height=1000", "cam_height");
+  expect_refused("cam_height=0.1", "cam_height");
+  expect_refused("cam_offset=50", "cam_offset");
+}
+
+TEST(SceneSpecRanges, StartPose) {
+  const SceneSpec s = parse_scene_spec("start=-1000:1000:-360");
+  EXPECT_DOUBLE_EQ(s.start.x_in, -1000);
+  EXPECT_DOUBLE_EQ(s.start.heading_deg, -360);
+  expect_refused("start=1e6:1e6:1e6", "start");
+  expect_refused("start=0:0:361", "start");
+  expect_refused("start=0:1001:0", "start");
+}
+
+TEST(SceneSpecRanges, RobotMotionAndEncoders) {
+  expect_refused("speed=100", "speed");
+  expect_refused("radius=1000", "radius");
+  expect_refused("wheelbase=1000", "wheelbase");
+  expect_refused("tpi=0.01", "tpi");
+  expect_refused("enc_noise=1000", "enc_noise");
+  EXPECT_DOUBLE_EQ(parse_scene_spec("speed=12,radius=60,wheelbase=60,tpi=10000").tpi, 10000);
+}
+
+TEST(SceneSpecRanges, WholeNumbersAndLight) {
+  expect_refused("ss=9", "ss");
+  expect_refused("flicker_period=1", "flicker_period");
+  expect_refused("flicker=1", "flicker");
+  expect_refused("step_gain=11", "step_gain");
+  expect_refused("seed=1000000000000000000", "seed");
+  expect_refused("texture_seed=1000000000000000000", "texture_seed");
+  expect_refused("frames=100001", "frames");
+}
+
+// Every key says what it accepts, for --help: the documentation and the check are one table.
+TEST(SceneSpecRanges, EveryKeyIsDocumented) {
+  const std::string doc = scene_spec_ranges();
+  const std::string all = format_scene_spec(SceneSpec{});
+  size_t keys = 0;
+  for (size_t pos = 0; pos < all.size();) {
+    const size_t eq = all.find('=', pos), comma = all.find(',', pos);
+    const std::string key = all.substr(pos, eq - pos);
+    EXPECT_NE(doc.find("  " + key + ": "), std::string::npos) << key << " has no documented range";
+    ++keys;
+    pos = comma == std::string::npos ? all.size() : comma + 1;
+  }
+  EXPECT_EQ(keys, 34u);
+  EXPECT_NE(doc.find("  length: -1000..1000 in"), std::string::npos) << doc;
+}
+
+// The writer accepts no texture seed its reader cannot take back: the largest one round-trips
+// through arena.txt and scene.txt, a larger one is refused before anything is written.
+TEST(SceneIo, LargestTextureSeedReadsBack) {
+  const std::string out = fresh_dir("big_seed");
+  SceneSpec s = parse_scene_spec("arena=" + arena_path("corridor") +
+                                 ",path=F1,size=32x24,flow=0,uyvy=0,texture_seed=999999999999999999");
+  write_scene(s, out);
+  const SceneData d = read_scene(out);
+  EXPECT_EQ(d.arena.texture_seed, 999999999999999999ull);
+  EXPECT_EQ(d.spec.texture_seed, 999999999999999999ull);
+  const World w = parse_arena("start 0 0 0\ntexture_seed 999999999999999999\n", "t.txt");
+  EXPECT_EQ(w.texture_seed, 999999999999999999ull);
+  EXPECT_THROW(parse_arena("start 0 0 0\ntexture_seed 1000000000000000000\n", "t.txt"), InputError);
+  EXPECT_THROW(parse_arena("start 0 0 0\ntexture_seed 1e3\n", "t.txt"), InputError);
+
+  const std::string refused = fresh_dir("too_big_seed");
+  const std::string parent = fs::path(refused).parent_path().string();
+  char a0[] = "scene", a1[] = "--spec", a3[] = "--out";
+  std::string spec = "path=F1,size=32x24,texture_seed=1000000000000000000";
+  std::vector<char *> argv = {a0, a1, spec.data(), a3, const_cast<char *>(refused.c_str())};
+  EXPECT_EQ(scene_command(int(argv.size()), argv.data()), 2);
+  EXPECT_FALSE(fs::exists(refused));
+  for (const auto &e : fs::directory_iterator(parent))
+    EXPECT_EQ(e.path().filename().string().find("scene_test_too_big_seed.tmp"), std::string::npos)
+        << e.path() << " left behind";
+}
+
+// --force replaces a scene; a directory that holds anything a scene does not write is refused
+// and left as it was (it used to be deleted whole when it held a scene.txt).
+TEST(SceneIo, ForceReplacesOnlyWhatASceneWrites) {
+  const std::string out = fresh_dir("force");
+  const std::string spec_text = "arena=" + arena_path("corridor") + ",path=F1,size=32x24,flow=0";
+  write_scene(parse_scene_spec(spec_text), out);
+  write_scene(parse_scene_spec(spec_text + ",rgb=1"), out, true);  // a scene over a scene
+  EXPECT_TRUE(fs::exists(out + "/frame_0000.ppm"));
+
+  std::ofstream(out + "/notes.txt") << "mine";
+  try {
+    write_scene(parse_scene_spec(spec_text), out, true);
+    ADD_FAILURE() << "replaced a directory holding notes.txt";
+  } catch (const InputError &e) {
+    EXPECT_NE(std::string(e.what()).find("'notes.txt'"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::exists(out + "/notes.txt"));
+  EXPECT_TRUE(fs::exists(out + "/frame_0000.ppm")) << "the old scene was touched";
+  fs::remove(out + "/notes.txt");
+
+  fs::create_directory(out + "/keep");
+  std::ofstream(out + "/keep/data.bin") << "mine";
+  EXPECT_THROW(write_scene(parse_scene_spec(spec_text), out, true), InputError);
+  EXPECT_TRUE(fs::exists(out + "/keep/data.bin"));
+  fs::remove_all(out + "/keep");
+
+  // A file named like a frame but not one (frame_12.pgm: fewer than 4 digits) is not the scene's.
+  std::ofstream(out + "/frame_12.pgm") << "P5";
+  EXPECT_THROW(write_scene(parse_scene_spec(spec_text), out, true), InputError);
+  fs::remove(out + "/frame_12.pgm");
+  write_scene(parse_scene_spec(spec_text), out, true);
+  EXPECT_FALSE(fs::exists(out + "/frame_0000.ppm")) << "the old scene's files stayed";
+}
+
+}  // namespace

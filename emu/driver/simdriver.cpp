@@ -179,6 +179,24 @@ RunResult Process::finish(double timeout_s) {
   return result_;
 }
 
+std::string printable(const std::string &text, size_t max_chars) {
+  std::string shown;
+  for (unsigned char c : text) {
+    if (shown.size() >= max_chars) {
+      shown += "...";
+      break;
+    }
+    if (c >= 0x20 && c < 0x7f) {
+      shown += char(c);
+    } else {
+      char esc[8];
+      std::snprintf(esc, sizeof esc, "\\x%02x", c);
+      shown += esc;
+    }
+  }
+  return shown;
+}
+
 RunResult run(const RunSpec &spec) {
   Process p(spec);
   return p.finish(spec.wall_timeout_s);
@@ -199,21 +217,7 @@ std::string describe(const RunResult &r) {
     std::string last = out.substr(nl == std::string::npos ? 0 : nl + 1);
     // What a simulator prints can be anything (a crashing program's binary output): shown
     // printable and short, so a report stays one readable line on any terminal.
-    std::string shown;
-    for (unsigned char c : last) {
-      if (shown.size() >= 200) {
-        shown += "...";
-        break;
-      }
-      if (c >= 0x20 && c < 0x7f) {
-        shown += char(c);
-      } else {
-        char esc[8];
-        std::snprintf(esc, sizeof esc, "\\x%02x", c);
-        shown += esc;
-      }
-    }
-    what += ": " + shown;
+    what += ": " + printable(last);
   }
   return what;
 }

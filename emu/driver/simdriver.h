@@ -68,6 +68,9 @@ class Process {
 };
 std::vector<std::string> command_line(const RunSpec &spec);
 std::string describe(const RunResult &r);
+// Text for a one-line report: bytes outside printable ASCII (control characters, a newline, a
+// program's binary output) as \xNN, cut after max_chars with "...".
+std::string printable(const std::string &text, size_t max_chars = 200);
 
 // The simulator named by $BFBENCH_SIM, else the given default; checked to be executable.
 std::string find_simulator(const std::string &default_path);

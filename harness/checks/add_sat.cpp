@@ -61,8 +61,8 @@ double lower_bound(const std::string &, int w, int h) { return 6.0 * w * h; }
 
 RunPlan plan_run(RunRequest &req) {
   if (req.inputs.size() != 2) throw InputError("add_sat_u8 takes two --in frames");
-  Image a = read_frame(req.inputs[0], req.raw_width, req.raw_height);
-  Image b = read_frame(req.inputs[1], req.raw_width, req.raw_height);
+  Image a = read_input(req, 0);
+  Image b = read_input(req, 1);
   if (a.width != b.width || a.height != b.height) throw InputError("add_sat_u8: the two frames differ in size");
   req.params.check_all_used();
   RunPlan p;
@@ -71,7 +71,7 @@ RunPlan plan_run(RunRequest &req) {
   p.write = [w, h](std::vector<std::vector<uint8_t>> &bufs, const std::string &path) {
     Image out(w, h);
     out.data = bufs[2];
-    write_pnm(path, out);
+    write_image(path, out);
   };
   p.summary = std::to_string(w) + "x" + std::to_string(h);
   return p;

@@ -12,6 +12,7 @@
 #include "io.h"
 #include "patterns.h"
 #include "robot_view.h"
+#include "formats.h"
 
 namespace bvb {
 namespace {
@@ -273,12 +274,12 @@ RunPlan plan_run(RunRequest &req) {
   std::vector<uint8_t> uyvy;
   Image rgb;
   int w, h;
-  if (in.size() > 5 && in.compare(in.size() - 5, 5, ".uyvy") == 0) {
+  if (format_of(in) == FileFormat::Uyvy) {
     if (req.raw_width <= 0 || req.raw_height <= 0) throw InputError(in + ": raw UYVY input needs --size WxH");
     w = req.raw_width, h = req.raw_height;
     uyvy = read_uyvy(in, w, h);
   } else {
-    Image img = read_pnm(in);
+    Image img = read_image(in);
     if (img.width < 2) throw InputError(in + ": blobs_uyvy needs a frame at least 2 pixels wide");
     w = img.width & ~1, h = img.height;  // UYVY pairs pixels: an odd last column is left out
     rgb = Image(w, h, 3);
@@ -312,8 +313,7 @@ RunPlan plan_run(RunRequest &req) {
     std::memcpy(blobs.data(), bufs[2].data(), blobs.size() * sizeof(bvb_blob));
     bvb_blob_summary sum;
     std::memcpy(&sum, bufs[3].data(), sizeof sum);
-    const bool text = path.size() > 4 && (path.compare(path.size() - 4, 4, ".txt") == 0 ||
-                                          path.compare(path.size() - 4, 4, ".csv") == 0);
+    const bool text = format_of(path) == FileFormat::Text;
     if (text) {
       std::string s = "class,count,min_x,min_y,max_x,max_y,centroid_x,centroid_y\n";
       char line[200];
@@ -323,7 +323,7 @@ RunPlan plan_run(RunRequest &req) {
                       b.max_x, b.max_y, double(b.sum_x) / b.count, double(b.sum_y) / b.count);
         s += line;
       }
-      write_file_atomic(path, s.data(), s.size());
+      write_text_output(path, s);
     } else {
       static const uint8_t colours[8][3] = {{255, 0, 0},   {0, 80, 255},  {0, 220, 0},   {255, 220, 0},
                                             {255, 0, 255}, {0, 230, 230}, {255, 128, 0}, {255, 255, 255}};
@@ -336,12 +336,13 @@ RunPlan plan_run(RunRequest &req) {
         for (int x = b.min_x; x <= b.max_x; ++x) dot(x, b.min_y), dot(x, b.max_y);
         for (int y = b.min_y; y <= b.max_y; ++y) dot(b.min_x, y), dot(b.max_x, y);
       }
-      write_pnm(path, out);
+      write_image(path, out);
     }
     int found = 0;
     for (int c = 0; c < BVB_BLOBS_MAX_CLASSES; ++c) found += sum.found[c];
     std::printf("blobs: %d found, %d labels used, %d pixels dropped\n", found, sum.labels_used, sum.dropped);
   };
+  p.kind = OutputKind::ImageOrText;
   p.summary = std::to_string(w) + "x" + std::to_string(h) + " " + std::to_string(prm.nclasses) + " classes";
   return p;
 }

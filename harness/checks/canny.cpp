@@ -176,7 +176,7 @@ CheckCall bench_call(const std::string &, int w, int h, Rng &rng) {
 
 RunPlan plan_run(RunRequest &req) {
   if (req.inputs.size() != 1) throw InputError("canny takes one --in frame (its Sobel gradients are computed on the host)");
-  Image img = read_frame(req.inputs[0], req.raw_width, req.raw_height);
+  Image img = read_input(req, 0);
   const int low = req.params.get_int("low", kLow, 1, 2040);
   const int high = req.params.get_int("high", std::max(kHigh, low), low, 65535);
   const int w = img.width, h = img.height;
@@ -190,7 +190,7 @@ RunPlan plan_run(RunRequest &req) {
   p.write = [w, h](std::vector<std::vector<uint8_t>> &bufs, const std::string &path) {
     Image out(w, h);
     out.data = bufs[2];
-    write_pnm(path, out);
+    write_image(path, out);
   };
   p.summary = std::to_string(w) + "x" + std::to_string(h) + " low " + std::to_string(low) + " high " +
               std::to_string(high) + " stack " + std::to_string(cap);

@@ -86,7 +86,7 @@ double lower_bound(const std::string &, int w, int h) { return 4.0 * w * h; }
 
 RunPlan plan_run(RunRequest &req) {
   if (req.inputs.size() != 1) throw InputError(req.kernel + " takes one --in frame");
-  Image in = read_frame(req.inputs[0], req.raw_width, req.raw_height);
+  Image in = read_input(req, 0);
   const int band = req.params.get_int("band", BVB_SOBEL3X3_BAND_ROWS(in.width), 1, 4096);
   req.params.check_all_used();
   const int w = in.width, h = in.height;
@@ -95,7 +95,7 @@ RunPlan plan_run(RunRequest &req) {
   p.write = [w, h](std::vector<std::vector<uint8_t>> &bufs, const std::string &path) {
     Image out(w, h);
     out.data = bufs[1];
-    write_pnm(path, out);
+    write_image(path, out);
   };
   p.summary = std::to_string(w) + "x" + std::to_string(h) + ", bands of " + std::to_string(band) + " rows";
   return p;

@@ -218,7 +218,7 @@ double lower_bound(const std::string &kernel, int w, int h) {
 
 RunPlan plan_run(RunRequest &req) {
   if (req.inputs.size() != 1) throw InputError(req.kernel + " takes one --in frame");
-  Image a = read_frame(req.inputs[0], req.raw_width, req.raw_height);
+  Image a = read_input(req, 0);
   if (a.width < 5 || a.height < 5) throw InputError(req.kernel + ": the frame must be at least 5x5");
   const int w = a.width, h = a.height;
   RunPlan p;
@@ -233,7 +233,7 @@ RunPlan plan_run(RunRequest &req) {
       for (int32_t v : r) maxv = std::max(maxv, v);
       Image out(w, h);
       for (size_t i = 0; i < r.size(); ++i) out.data[i] = uint8_t(std::max<int64_t>(0, int64_t(r[i]) * 255 / maxv));
-      write_pnm(path, out);
+      write_image(path, out);
     };
     p.summary = std::to_string(w) + "x" + std::to_string(h) + ", response (positive part, scaled to the peak)";
     return p;
@@ -262,7 +262,7 @@ RunPlan plan_run(RunRequest &req) {
       std::memcpy(&n, bufs[2].data(), 4);
       const int32_t *c = reinterpret_cast<const int32_t *>(bufs[1].data());
       for (int k = 0; k < n; ++k) mark(out, c[2 * k] & 0xFFFF, c[2 * k] >> 16, 0);
-      write_pnm(path, out);
+      write_image(path, out);
     };
     p.summary = std::to_string(w) + "x" + std::to_string(h) + ", candidates above " + std::to_string(thr);
     return p;
@@ -276,7 +276,7 @@ RunPlan plan_run(RunRequest &req) {
       if (c[3 * k] < 0) break;
       mark(out, c[3 * k], c[3 * k + 1], 3);
     }
-    write_pnm(path, out);
+    write_image(path, out);
   };
   p.summary = std::to_string(w) + "x" + std::to_string(h) + ", corners above " + std::to_string(thr) +
               " marked with crosses";

@@ -13,6 +13,7 @@
 #include "family.h"
 #include "io.h"
 #include "patterns.h"
+#include "formats.h"
 
 namespace bvb {
 namespace {
@@ -256,7 +257,7 @@ CheckCall iterate_call(int w, int h, const std::vector<int16_t> &coef, const std
   const int pitch = BVB_HS_COEF_PITCH(w);
   int ic = c.in("coef", as_bytes(coef), {2, true, pitch, h, pitch});
   int iu = c.in("uv_in", as_bytes(uv), {2, true, 2 * w, h, in_stride / 2});
-  int io = c.out("uv_out", size_t(out_stride) * (h - 1) + 4 * size_t(w), {2, true, 2 * w, h, out_stride / 2});
+  int io = c.out("uv_out", size_t(out_stride) * (h - 1) + 4 * size_t(w), {2, true, 2 * w, h, out_stride / 2, 2});
   c.buf(ic).buf(iu).word(in_stride).buf(io).word(out_stride).word(w).word(h);
   c.host = [=](HostBuffers &m) {
     bvb_hs_iterate_c(m.s16(ic), m.s16(iu), in_stride, m.s16(io), out_stride, w, h);
@@ -274,7 +275,7 @@ CheckCall full_call(int w, int h, int stride, const FramePair &p, int32_t alpha2
   const View fv{1, false, w, h, stride};
   int i1 = c.in("i1", p.f1, fv);
   int i2 = c.in("i2", p.f2, fv);
-  int io = c.out("uv_out", size_t(out_stride) * (h - 1) + 4 * size_t(w), {2, true, 2 * w, h, out_stride / 2});
+  int io = c.out("uv_out", size_t(out_stride) * (h - 1) + 4 * size_t(w), {2, true, 2 * w, h, out_stride / 2, 2});
   int is = c.scratch("scratch", BVB_HS_SCRATCH_BYTES(w, h));
   c.buf(i1).buf(i2).word(w).word(h).word(stride).word(alpha2).word(iterations).buf(io).word(out_stride).buf(is);
   c.host = [=](HostBuffers &m) {
@@ -393,8 +394,8 @@ RunPlan plan_run(RunRequest &req) {
   const int alpha = req.params.get_int("alpha", 8, 8, 256);
   const int iterations = req.params.get_int("iterations", 10, 0, 100000);
   req.params.check_all_used();
-  Image a = read_frame(req.inputs[0], req.raw_width, req.raw_height);
-  Image b = read_frame(req.inputs[1], req.raw_width, req.raw_height);
+  Image a = read_input(req, 0);
+  Image b = read_input(req, 1);
   if (a.width != b.width || a.height != b.height) throw InputError("hornschunck: the two frames differ in size");
   if (a.width < BVB_HS_MIN_DIM || a.height < BVB_HS_MIN_DIM)
     throw InputError("hornschunck: frames must be at least 2x2");
@@ -410,8 +411,9 @@ RunPlan plan_run(RunRequest &req) {
       f.u[i] = float(uv[2 * i]) / (1 << BVB_HS_UV_FRAC_BITS);
       f.v[i] = float(uv[2 * i + 1]) / (1 << BVB_HS_UV_FRAC_BITS);
     }
-    write_flo(path, f);
+    write_flow(path, f);
   };
+  plan.kind = OutputKind::Flow;
   plan.summary = size_name(w, h) + ", alpha " + std::to_string(alpha) + ", " + std::to_string(iterations) +
                  " iterations";
   return plan;

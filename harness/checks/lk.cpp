@@ -18,6 +18,7 @@
 #include "family.h"
 #include "io.h"
 #include "patterns.h"
+#include "formats.h"
 
 namespace bvb {
 namespace {
@@ -246,7 +247,7 @@ RunPlan plan_run(RunRequest &req) {
   RunPlan p;
   if (req.kernel == "lk_pyramid") {
     if (req.inputs.size() != 1) throw InputError("lk_pyramid takes one --in frame");
-    Image a = read_frame(req.inputs[0], req.raw_width, req.raw_height);
+    Image a = read_input(req, 0);
     const int levels = req.params.get_int("levels", 3, 1, BVB_LK_MAX_LEVELS);
     req.params.check_all_used();
     if (levels > max_levels(a.width, a.height)) throw InputError("lk_pyramid: the frame is too small for that many levels");
@@ -260,14 +261,14 @@ RunPlan plan_run(RunRequest &req) {
       const int s = l == 0 ? w : BVB_LK_LEVEL_STRIDE(lw);
       for (int y = 0; y < lh; ++y)
         for (int x = 0; x < lw; ++x) out.at(x, y) = l == 0 ? bufs[0][size_t(y) * w + x] : src[size_t(y) * s + x];
-      write_pnm(path, out);
+      write_image(path, out);
     };
     p.summary = std::to_string(w) + "x" + std::to_string(h) + ", level " + std::to_string(levels - 1) + " written";
     return p;
   }
   if (req.inputs.size() != 2) throw InputError("lk_track takes two --in frames (previous, next)");
-  Image a = read_frame(req.inputs[0], req.raw_width, req.raw_height);
-  Image b = read_frame(req.inputs[1], req.raw_width, req.raw_height);
+  Image a = read_input(req, 0);
+  Image b = read_input(req, 1);
   if (a.width != b.width || a.height != b.height) throw InputError("lk_track: the two frames differ in size");
   TrackSetup t;
   t.w = a.width;
@@ -302,8 +303,9 @@ RunPlan plan_run(RunRequest &req) {
                     r[0] / 65536.0, r[1] / 65536.0, r[2] >= 0 && r[2] <= 3 ? names[r[2]] : "?", r[3]);
       text += line;
     }
-    write_file_atomic(path, text.data(), text.size());
+    write_text_output(path, text);
   };
+  p.kind = OutputKind::Text;
   p.summary = std::to_string(t.w) + "x" + std::to_string(t.h) + ", " + std::to_string(pr.count) + " Harris corners tracked";
   return p;
 }

@@ -85,7 +85,7 @@ double lower_bound(const std::string &, int w, int h) { return 3.0 * w * h; }
 
 RunPlan plan_run(RunRequest &req) {
   if (req.inputs.size() != 1) throw InputError(req.kernel + " takes one --in frame");
-  Image a = read_frame(req.inputs[0], req.raw_width, req.raw_height);
+  Image a = read_input(req, 0);
   req.params.check_all_used();
   RunPlan p;
   p.call = morph_call(req.kernel, a.width, a.height, a.width, a.width, a.data, "run");
@@ -93,7 +93,7 @@ RunPlan plan_run(RunRequest &req) {
   p.write = [w, h](std::vector<std::vector<uint8_t>> &bufs, const std::string &path) {
     Image out(w, h);
     out.data = bufs[1];
-    write_pnm(path, out);
+    write_image(path, out);
   };
   p.summary = std::to_string(w) + "x" + std::to_string(h);
   return p;

@@ -16,6 +16,7 @@
 #include "family.h"
 #include "io.h"
 #include "patterns.h"
+#include "formats.h"
 
 namespace bvb {
 namespace {
@@ -328,8 +329,8 @@ double lower_bound(const std::string &kernel, int w, int h) {
 
 RunPlan plan_run(RunRequest &req) {
   if (req.inputs.size() != 2) throw InputError(req.kernel + " takes two --in frames (frame 1, frame 2)");
-  Image a = read_frame(req.inputs[0], req.raw_width, req.raw_height);
-  Image b = read_frame(req.inputs[1], req.raw_width, req.raw_height);
+  Image a = read_input(req, 0);
+  Image b = read_input(req, 1);
   if (a.width != b.width || a.height != b.height) throw InputError(req.kernel + ": the two frames differ in size");
   const int r = req.params.get_int("r", 5, 1, BVB_NCC_MAX_RADIUS);
   const int s = req.params.get_int("s", 8, 1, BVB_NCC_MAX_SEARCH);
@@ -363,8 +364,9 @@ RunPlan plan_run(RunRequest &req) {
         std::snprintf(line, sizeof line, "%d %d %d %d %d %d\n", pts[i].first, pts[i].second, v[0], v[1], v[2], v[3]);
         text += line;
       }
-      write_file_atomic(path, text.data(), text.size());
+      write_text_output(path, text);
     };
+    p.kind = OutputKind::Text;
     p.summary = std::to_string(fr.w) + "x" + std::to_string(fr.h) + ", " + std::to_string(pts.size()) +
                 " points, r " + std::to_string(r) + ", s " + std::to_string(s);
   } else {
@@ -380,7 +382,7 @@ RunPlan plan_run(RunRequest &req) {
         std::memcpy(&q, &bufs[2][2 * i], 2);
         out.data[i] = uint8_t((int(q) + 32768) >> 8);
       }
-      write_pnm(path, out);
+      write_image(path, out);
     };
     p.summary = std::to_string(fr.w) + "x" + std::to_string(fr.h) + ", point " + std::to_string(x) + "," +
                 std::to_string(y) + ", r " + std::to_string(r) + ", s " + std::to_string(s);

@@ -10,6 +10,7 @@
 #include "io.h"
 #include "patterns.h"
 #include "robot_view.h"
+#include "formats.h"
 
 namespace bvb {
 namespace {
@@ -225,7 +226,7 @@ void check_frame_limit(const std::string &kernel, int w, int h) {
 
 RunPlan plan_grow(RunRequest &req) {
   if (req.inputs.size() != 1) throw InputError("region_grow takes one --in frame");
-  Image img = read_frame(req.inputs[0], req.raw_width, req.raw_height);
+  Image img = read_input(req, 0);
   const int w = img.width, h = img.height;
   check_frame_limit("region_grow", w, h);
   bvb_region_params prm;
@@ -241,7 +242,7 @@ RunPlan plan_grow(RunRequest &req) {
   p.write = [w, h](std::vector<std::vector<uint8_t>> &bufs, const std::string &path) {
     Image out(w, h);
     out.data = bufs[1];
-    write_pnm(path, out);
+    write_image(path, out);
     bvb_region_stats st;
     std::memcpy(&st, bufs[4].data(), sizeof st);
     std::printf("region: %d pixels, mean %.1f, box (%d,%d)-(%d,%d), centroid (%.1f, %.1f), dropped %d\n", st.count,
@@ -257,7 +258,7 @@ RunPlan plan_grow(RunRequest &req) {
 // Input: a mask frame (non-zero = floor). Output: CSV column,boundary_row.
 RunPlan plan_free(RunRequest &req) {
   if (req.inputs.size() != 1) throw InputError("free_space takes one --in mask frame");
-  Image img = read_frame(req.inputs[0], req.raw_width, req.raw_height);
+  Image img = read_input(req, 0);
   const int w = img.width, h = img.height;
   const int min_gap = req.params.get_int("min_gap", 1, 1, 4096);
   req.params.check_all_used();
@@ -270,8 +271,9 @@ RunPlan plan_free(RunRequest &req) {
       std::memcpy(&r, bufs[1].data() + 2 * x, 2);
       csv += std::to_string(x) + "," + std::to_string(r) + "\n";
     }
-    write_file_atomic(path, csv.data(), csv.size());
+    write_text_output(path, csv);
   };
+  p.kind = OutputKind::Text;
   p.summary = std::to_string(w) + "x" + std::to_string(h) + " min_gap " + std::to_string(min_gap);
   return p;
 }

@@ -8,6 +8,7 @@
 #include "family.h"
 #include "io.h"
 #include "patterns.h"
+#include "formats.h"
 
 namespace bvb {
 namespace {
@@ -188,7 +189,7 @@ RunPlan plan_run(RunRequest &req) {
   const bool profile = req.kernel == "scanline_profile_u8";
   if (req.inputs.size() != (profile ? 1u : 2u))
     throw InputError(req.kernel + (profile ? " takes one --in frame" : " takes two --in frames"));
-  Image a = read_frame(req.inputs[0], req.raw_width, req.raw_height);
+  Image a = read_input(req, 0);
   const int rows = req.params.get_int("rows", std::min(std::max(a.height / 2, 1), BVB_SCANLINE_MAX_ROWS), 1,
                                       std::min(a.height, BVB_SCANLINE_MAX_ROWS));
   const int y0 = req.params.get_int("y0", (a.height - rows) / 2, 0, a.height - rows);
@@ -200,12 +201,13 @@ RunPlan plan_run(RunRequest &req) {
     p.write = [](std::vector<std::vector<uint8_t>> &bufs, const std::string &path) {
       std::string out = "x,profile\n";
       for (size_t x = 0; x < bufs[1].size(); ++x) out += std::to_string(x) + "," + std::to_string(bufs[1][x]) + "\n";
-      write_file_atomic(path, out.data(), out.size());
+      write_text_output(path, out);
     };
+    p.kind = OutputKind::Text;
     p.summary = std::to_string(a.width) + " columns, rows " + std::to_string(y0) + ".." + std::to_string(y0 + rows - 1);
     return p;
   }
-  Image b = read_frame(req.inputs[1], req.raw_width, req.raw_height);
+  Image b = read_input(req, 1);
   if (a.width != b.width || a.height != b.height) throw InputError(req.kernel + ": the two frames differ in size");
   const int w = req.params.get_int("w", std::min(a.width, BVB_SCANLINE_MAX_WINDOW), 1,
                                    std::min(a.width, BVB_SCANLINE_MAX_WINDOW));
@@ -230,8 +232,9 @@ RunPlan plan_run(RunRequest &req) {
       std::snprintf(f, sizeof f, "%.4f", double(s) / n);
       out += std::to_string(t) + "," + std::to_string(s) + "," + std::to_string(n) + "," + f + "\n";
     }
-    write_file_atomic(path, out.data(), out.size());
+    write_text_output(path, out);
   };
+  p.kind = OutputKind::Text;
   p.summary = "window " + std::to_string(w) + " at x " + std::to_string(x0) + ", rho " + std::to_string(rho) +
               ", rows " + std::to_string(y0) + ".." + std::to_string(y0 + rows - 1);
   return p;

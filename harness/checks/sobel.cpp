@@ -125,7 +125,7 @@ double lower_bound(const std::string &kernel, int w, int h) {
 
 RunPlan plan_run(RunRequest &req) {
   if (req.inputs.size() != 1) throw InputError(req.kernel + " takes one --in frame");
-  Image in = read_frame(req.inputs[0], req.raw_width, req.raw_height);
+  Image in = read_input(req, 0);
   if (in.width < 3 || in.height < 3) throw InputError(req.kernel + ": the frame must be 3x3 or larger");
   const int w = in.width, h = in.height;
   RunPlan p;
@@ -135,7 +135,7 @@ RunPlan plan_run(RunRequest &req) {
     p.write = [w, h](std::vector<std::vector<uint8_t>> &bufs, const std::string &path) {
       Image out(w, h);
       out.data = bufs[1];
-      write_pnm(path, out);
+      write_image(path, out);
     };
     p.summary = size_name(w, h) + ", magnitude";
     return p;
@@ -157,7 +157,7 @@ RunPlan plan_run(RunRequest &req) {
         out.data[i] = uint8_t(std::clamp(128 + v / 8, 0, 255));
       }
     }
-    write_pnm(path, out);
+    write_image(path, out);
   };
   p.summary = size_name(w, h) + ", " + show;
   return p;

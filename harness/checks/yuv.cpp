@@ -49,7 +49,7 @@ CheckCall yuv_call(const std::string &kernel, int w, int h, int sstride, int dst
   c.pixels = double(w) * h;
   const bool rgb = kernel == "uyvy_to_rgb24";
   const int out_row = rgb ? 3 * w : w;
-  const View sv{1, false, 2 * w, h, sstride}, dv{1, false, out_row, h, dstride};
+  const View sv{1, false, 2 * w, h, sstride}, dv{1, false, out_row, h, dstride, rgb ? 3 : 1};
   int is = c.in("src", std::move(src), sv);
   int id = c.out("dst", size_t(dstride) * (h - 1) + out_row, dv);
   c.buf(is).buf(id).word(w).word(h).word(sstride).word(dstride);
@@ -111,7 +111,7 @@ double lower_bound(const std::string &kernel, int w, int h) {
 RunPlan plan_run(RunRequest &req) {
   if (req.inputs.size() != 1) throw InputError(req.kernel + " takes one --in frame");
   const std::string &path = req.inputs[0];
-  const bool raw = path.size() > 5 && path.compare(path.size() - 5, 5, ".uyvy") == 0;
+  const bool raw = format_of(path) == FileFormat::Uyvy;
   int w, h;
   std::vector<uint8_t> bytes;
   if (raw) {
@@ -120,8 +120,8 @@ RunPlan plan_run(RunRequest &req) {
     h = req.raw_height;
     bytes = read_uyvy(path, w, h);
   } else {
-    // A PPM goes through the scene generator's RGB -> UYVY (a PGM as grey RGB).
-    Image img = read_pnm(path);
+    // A colour frame goes through the scene generator's RGB -> UYVY (a grey one as grey RGB).
+    Image img = read_image(path);
     if (img.width % 2) throw InputError(path + ": UYVY needs an even width");
     if (img.channels == 1) {
       Image c(img.width, img.height, 3);
@@ -139,7 +139,7 @@ RunPlan plan_run(RunRequest &req) {
   p.write = [w, h, rgb](std::vector<std::vector<uint8_t>> &bufs, const std::string &out) {
     Image img(w, h, rgb ? 3 : 1);
     img.data = bufs[1];
-    write_pnm(out, img);
+    write_image(out, img);
   };
   p.summary = std::to_string(w) + "x" + std::to_string(h);
   return p;

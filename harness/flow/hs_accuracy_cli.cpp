@@ -12,6 +12,7 @@
 #include "hs_accuracy.h"
 #include "io.h"
 #include "patterns.h"
+#include "simdriver.h"
 
 namespace bvb {
 
@@ -35,7 +36,7 @@ const char *kUsage =
     "Exit status: 0 table printed, 2 bad usage or unreadable input.\n";
 
 int usage_error(const std::string &msg) {
-  std::fprintf(stderr, "hs-accuracy: %s (try --help)\n", msg.c_str());
+  std::fprintf(stderr, "hs-accuracy: %s (try --help)\n", sim::printable(msg, 2000).c_str());
   return 2;
 }
 
@@ -99,11 +100,11 @@ int hs_accuracy_command(int argc, char **argv) {
     std::fputs(format_hs_accuracy_table(rows, alpha2_q4, int(iterations)).c_str(), stdout);
     return 0;
   } catch (const InputError &e) {
-    std::fprintf(stderr, "hs-accuracy: %s\n", e.what());
+    std::fprintf(stderr, "hs-accuracy: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   } catch (const std::exception &e) {
     // Exit 1 means a check failed; a fault of the program is reported as bfbench's main does.
-    std::fprintf(stderr, "hs-accuracy: internal error: %s\n", e.what());
+    std::fprintf(stderr, "hs-accuracy: internal error: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   }
 }

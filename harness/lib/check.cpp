@@ -1,10 +1,12 @@
 #include "check.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <sstream>
 
 #include "patterns.h"
+#include "simdriver.h"
 
 namespace bvb {
 
@@ -289,13 +291,75 @@ std::vector<Failure> compare_call(const CheckCall &cc, const std::string &impl, 
   return out;
 }
 
+void drop_kind_prefix(Failure &f) {
+  const std::string prefix = std::string(failure_kind_name(f.kind)) + ": ";
+  while (f.message.compare(0, prefix.size(), prefix) == 0) f.message.erase(0, prefix.size());
+}
+
+std::string format_failure(const Failure &f) {
+  Failure g = f;
+  drop_kind_prefix(g);
+  char seed[16];
+  std::snprintf(seed, sizeof seed, "%u", g.seed);
+  return "FAILED " + g.kernel + " (" + g.impl + ") " + g.case_name + ", seed " + seed + ", case " + g.case_id +
+         ": " + failure_kind_name(g.kind) + ": " + sim::printable(g.message, 2000) + "\n  replay: " +
+         replay_command(g) + "\n";
+}
+
+std::string format_check_report(const Tallies &tally, const std::vector<Failure> &failures, size_t max_shown,
+                                uint32_t seed) {
+  std::string out;
+  for (const auto &kv : tally) {
+    std::string line = "  " + kv.first;
+    line.resize(std::max<size_t>(line.size() + 1, 26), ' ');
+    for (const auto &it : kv.second)
+      line += it.first + ": " + std::to_string(it.second.calls - it.second.failed) + "/" +
+              std::to_string(it.second.calls) + " ok   ";
+    out += line + "\n";
+  }
+  std::map<std::string, size_t> shown;
+  std::map<std::string, std::string> kernel_of;  // "kernel (impl)" -> kernel, for those cut short
+  for (const auto &f : failures) {
+    const std::string key = f.kernel + " (" + f.impl + ")";
+    if (shown[key]++ >= max_shown) {
+      kernel_of[key] = f.kernel;
+      continue;
+    }
+    out += format_failure(f);
+  }
+  // Say what was left out and how to see it, rather than stopping silently at the first few.
+  for (const auto &kv : kernel_of) {
+    const size_t more = shown[kv.first] - max_shown;
+    out += "  ... " + std::to_string(more) + " more failure" + (more == 1 ? "" : "s") + " of " + kv.first +
+           " not shown (-v shows all): bfbench check -k " + kv.second + " --seed " + std::to_string(seed) + " -v\n";
+  }
+  return out;
+}
+
+std::string format_failed_calls(const std::map<std::string, Checker::Tally> &per_impl) {
+  size_t calls = 0, failed = 0;
+  std::string each;
+  // The assembly first: it is what a failing check is usually about.
+  std::vector<std::string> order;
+  if (per_impl.count("asm")) order.push_back("asm");
+  for (const auto &kv : per_impl)
+    if (kv.first != "asm") order.push_back(kv.first);
+  for (const auto &impl : order) {
+    const Checker::Tally &t = per_impl.at(impl);
+    calls += t.calls;
+    failed += t.failed;
+    each += (each.empty() ? "" : ", ") + impl + " " + std::to_string(t.failed) + " of " + std::to_string(t.calls);
+  }
+  if (!failed) return "";
+  return std::to_string(failed) + " of " + std::to_string(calls) + " call" + (calls == 1 ? "" : "s") + " failed (" +
+         each + ")";
+}
+
 void Checker::record(const CheckCall &cc, const std::string &impl, const std::vector<Failure> &found) {
   auto &t = tally_[cc.kernel][impl];
   ++t.calls;
   for (Failure f : found) {
-    // The report prints the kind before the message: "hang: hang: ..." says it twice.
-    const std::string prefix = std::string(failure_kind_name(f.kind)) + ": ";
-    if (f.message.compare(0, prefix.size(), prefix) == 0) f.message.erase(0, prefix.size());
+    drop_kind_prefix(f);
     failures_.push_back(std::move(f));
   }
   if (!found.empty()) ++t.failed;

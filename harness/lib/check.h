@@ -209,6 +209,24 @@ std::vector<Failure> compare_call(const CheckCall &call, const std::string &impl
                                   const std::vector<std::vector<uint8_t>> &expected, const HostBuffers &host,
                                   const uint32_t *ret);
 
+// Reports print the kind before the message ("hang: ..."): a message that starts with its own
+// kind loses that prefix, so a report never says "hang: hang:".
+void drop_kind_prefix(Failure &f);
+// One failure as the report shows it: "FAILED kernel (impl) case, seed S, case ID: kind: message",
+// then the replay command on its own line. Control characters in the message are escaped.
+std::string format_failure(const Failure &f);
+
+using Tallies = std::map<std::string, std::map<std::string, Checker::Tally>>;  // kernel -> impl
+// The report of one seed's check: a line per kernel with each implementation's passed/checked
+// calls, then at most max_shown failures per kernel and implementation; for the rest, how many
+// were left out and the command that shows them all (-v).
+std::string format_check_report(const Tallies &tally, const std::vector<Failure> &failures, size_t max_shown,
+                                uint32_t seed);
+// Calls on the Blackfin that failed, counted per implementation (one call that fails several
+// ways counts once; the host reference's runs are not Blackfin calls):
+// "320 of 640 calls failed (asm 320 of 320, c 0 of 320)". Empty when none failed.
+std::string format_failed_calls(const std::map<std::string, Checker::Tally> &per_impl);
+
 // The byte that output buffers start as: a kernel that skips a pixel leaves it showing.
 inline uint8_t poison_byte(size_t i) { return uint8_t(0xC3 + i * 0x29); }
 

@@ -107,25 +107,57 @@ std::string bench_size_problem(const std::string &kernel, int w, int h) {
   return "";
 }
 
-Image read_frame(const std::string &path, int raw_w, int raw_h, bool want_grey) {
-  const bool raw = path.size() > 5 && path.compare(path.size() - 5, 5, ".uyvy") == 0;
-  if (raw) {
+Image read_frame(const std::string &path, int raw_w, int raw_h) {
+  if (format_of(path) == FileFormat::Uyvy) {
     if (raw_w <= 0 || raw_h <= 0) throw InputError(path + ": raw UYVY input needs --size WxH");
     auto bytes = read_uyvy(path, raw_w, raw_h);
     Image img(raw_w, raw_h);
     for (size_t i = 0; i < img.data.size(); ++i) img.data[i] = bytes[2 * i + 1];  // the Y bytes
     return img;
   }
-  Image img = read_pnm(path);
-  if (want_grey && img.channels == 3) {
-    Image g(img.width, img.height);
-    for (size_t i = 0; i < g.data.size(); ++i) {
-      const uint8_t *p = &img.data[3 * i];
-      g.data[i] = uint8_t((77 * p[0] + 150 * p[1] + 29 * p[2] + 128) >> 8);
-    }
-    return g;
+  return read_image(path);
+}
+
+Image read_input(const RunRequest &req, size_t i) {
+  if (i >= req.inputs.size()) throw InputError(req.kernel + " needs " + std::to_string(i + 1) + " --in frames");
+  const std::string &path = req.inputs[i];
+  Image img = read_frame(path, req.raw_width, req.raw_height);
+  if (img.channels == 1) return img;
+  // Never greyed silently: a colour frame may be a mistake (the wrong file, a kernel that was
+  // meant to see colour), so converting is the user's explicit choice.
+  if (!req.grey_from_colour)
+    throw InputError(path + ": a colour image, and " + req.kernel +
+                     " takes grey frames (.pgm, a grey .png, a uint8 HxW .npy, or .uyvy's Y plane); "
+                     "--grey converts colour with BT.601 luma");
+  Image g(img.width, img.height);
+  for (size_t k = 0; k < g.data.size(); ++k) {
+    const uint8_t *p = &img.data[3 * k];
+    g.data[k] = uint8_t((77 * p[0] + 150 * p[1] + 29 * p[2] + 128) >> 8);
   }
-  return img;
+  return g;
+}
+
+NpyArray npy_of_buffer(const Buffer &b, const std::vector<uint8_t> &data) {
+  const View &v = b.view;
+  const size_t elem = size_t(v.elem);
+  NpyArray a;
+  a.dtype = npy_int_dtype(v.elem, v.is_signed);
+  if (v.width <= 0) {
+    a.shape = {data.size() / elem};
+    a.data.assign(data.begin(), data.begin() + long(a.shape[0] * elem));
+    return a;
+  }
+  const size_t cols = size_t(v.width), rows = size_t(v.height), stride = size_t(v.stride > 0 ? v.stride : v.width);
+  if (((rows - 1) * stride + cols) * elem > data.size())
+    throw std::logic_error("buffer '" + b.name + "' is smaller than its view");
+  a.shape = {rows, cols};
+  if (v.channels > 1 && cols % size_t(v.channels) == 0) a.shape = {rows, cols / size_t(v.channels), size_t(v.channels)};
+  a.data.reserve(rows * cols * elem);
+  for (size_t y = 0; y < rows; ++y) {
+    const auto row = data.begin() + long(y * stride * elem);
+    a.data.insert(a.data.end(), row, row + long(cols * elem));
+  }
+  return a;
 }
 
 }  // namespace bvb

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "check.h"
+#include "formats.h"
 #include "image.h"
 
 namespace bvb {
@@ -34,6 +35,9 @@ struct RunRequest {
   std::string output;
   Params params;
   int raw_width = 0, raw_height = 0;  // for raw UYVY inputs (--size WxH)
+  // A colour frame given to a kernel of grey frames is an error unless this is set (run
+  // --grey): then it is converted with BT.601 luma weights.
+  bool grey_from_colour = false;
 };
 
 // What bfbench run executes: one call, and how its buffers become the output file.
@@ -41,6 +45,9 @@ struct RunPlan {
   CheckCall call;
   std::function<void(std::vector<std::vector<uint8_t>> &bufs, const std::string &path)> write;
   std::string summary;  // e.g. "160x120, 1 output frame"
+  // What write() makes, for the names --out may have (formats.h); .npy is always possible:
+  // bfbench run writes the chosen buffer itself.
+  OutputKind kind = OutputKind::Image;
 };
 
 struct Family {
@@ -73,7 +80,16 @@ const SizeRule *bench_size_rule(const std::string &kernel);
 // "" when the kernel can be benched at w x h, else why not, naming its minimum.
 std::string bench_size_problem(const std::string &kernel, int w, int h);
 
-// Reads an input frame for bfbench run: PGM/PPM by content, raw .uyvy by extension (needs size).
-Image read_frame(const std::string &path, int raw_w, int raw_h, bool want_grey = true);
+// Reads an input frame for bfbench run in the format its name says (formats.h); raw .uyvy needs
+// the size and gives its Y plane.
+Image read_frame(const std::string &path, int raw_w, int raw_h);
+// Input i of a run as a grey frame: a colour one is an InputError naming the kernel and what it
+// takes, unless req.grey_from_colour asks for the conversion.
+Image read_input(const RunRequest &req, size_t i);
+
+// A call's buffer as a NumPy array: its element type and sign, shape (rows, elements per row)
+// or (rows, pixels per row, channels) from its view, the stride's padding left out; a buffer
+// without a 2-D view is flat.
+NpyArray npy_of_buffer(const Buffer &b, const std::vector<uint8_t> &data);
 
 }  // namespace bvb

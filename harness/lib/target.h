@@ -21,6 +21,7 @@ struct View {
   int width = 0;         // elements per row (0: a flat array of size/elem elements)
   int height = 1;
   int stride = 0;        // elements between rows
+  int channels = 1;      // interleaved values per pixel (RGB 3, flow u,v 2): width counts all
 };
 
 enum class Role { In, Out, InOut, Scratch };

@@ -393,12 +393,12 @@ int pipeline_command(int argc, char **argv) {
     if (!svg.empty()) write_svgs(svg, def->name, run, dir ? &dir->arena : &gen->arena());
     return run.mismatches.empty() ? 0 : 1;
   } catch (const InputError &e) {
-    std::fprintf(stderr, "bfbench pipeline: %s\n", e.what());
+    std::fprintf(stderr, "bfbench pipeline: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   } catch (const sim::SetupError &e) {
     // A simulator or firmware that cannot run is a set-up problem, exit 2 as in every command;
     // 1 is kept for decisions that differ.
-    std::fprintf(stderr, "bfbench pipeline: %s\n", e.what());
+    std::fprintf(stderr, "bfbench pipeline: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   }
 }

@@ -22,6 +22,7 @@
 #include "pipe_common.h"
 #include "patterns.h"
 #include "scene/scene_io.h"
+#include "formats.h"
 
 namespace bvb {
 
@@ -374,8 +375,8 @@ double lower_bound(const std::string &, int, int) { return 0; }
 // camera of the frames' size (camera.h) unless --param says otherwise.
 RunPlan plan_run(RunRequest &req) {
   if (req.inputs.size() != 2) throw InputError("odometry takes two --in frames (previous, current)");
-  const Image a = read_frame(req.inputs[0], req.raw_width, req.raw_height);
-  const Image b = read_frame(req.inputs[1], req.raw_width, req.raw_height);
+  const Image a = read_input(req, 0);
+  const Image b = read_input(req, 1);
   if (a.width != b.width || a.height != b.height) throw InputError("odometry: the two frames differ in size");
   Camera cam = Camera::standard(a.width, a.height);
   cam.cam_height_in = req.params.get_int("cam_height_mil", 4000, 100, 64000) / 1000.0;
@@ -399,8 +400,9 @@ RunPlan plan_run(RunRequest &req) {
       std::snprintf(line, sizeof line, "%s,%.6f\n", d.first.c_str(), d.second);
       s += line;
     }
-    write_file_atomic(path, s.data(), s.size());
+    write_text_output(path, s);
   };
+  plan.kind = OutputKind::Text;
   plan.summary = std::to_string(a.width) + "x" + std::to_string(a.height) + ", the motion between two frames";
   return plan;
 }

@@ -7,6 +7,7 @@
 #include "io.h"
 #include "scene_io.h"
 #include "world.h"
+#include "simdriver.h"
 
 namespace bvb {
 
@@ -24,12 +25,13 @@ const char *kUsage =
     "      enc_noise tpi wheelbase radius block_dist start texture_seed uyvy flow rgb\n"
     "      (meanings and defaults: harness/scene/scene_io.h)\n"
     "DIR gets frame_NNNN.pgm/.uyvy, flow_NNNN.flo, truth.csv, columns.csv, scene.txt, arena.txt;\n"
-    "it is written under a temporary name and renamed when complete. --force replaces an\n"
-    "existing scene directory.\n"
+    "it is written under a temporary name, read back and renamed when complete. --force\n"
+    "replaces an existing scene directory that holds only what a scene writes (anything else\n"
+    "in it is refused, never deleted).\n"
     "Units: inches and degrees; heading counter-clockwise from +x; image x right, y down.\n";
 
 int usage_error(const std::string &msg) {
-  std::fprintf(stderr, "scene: %s (try --help)\n", msg.c_str());
+  std::fprintf(stderr, "scene: %s (try --help)\n", sim::printable(msg, 2000).c_str());
   return 2;
 }
 
@@ -47,6 +49,8 @@ int scene_command(int argc, char **argv) {
     };
     if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
+      std::fputs("what each key accepts:\n", stdout);
+      std::fputs(scene_spec_ranges().c_str(), stdout);
       return 0;
     } else if (a == "--spec") {
       if (!value(spec)) return usage_error("--spec needs a value");
@@ -90,11 +94,11 @@ int scene_command(int argc, char **argv) {
                 d.camera.height, d.arena.name.c_str());
     return 0;
   } catch (const InputError &e) {
-    std::fprintf(stderr, "scene: %s\n", e.what());
+    std::fprintf(stderr, "scene: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   } catch (const std::exception &e) {
     // Exit 1 means a check failed; a fault of the program is reported as bfbench's main does.
-    std::fprintf(stderr, "scene: internal error: %s\n", e.what());
+    std::fprintf(stderr, "scene: internal error: %s\n", sim::printable(e.what(), 2000).c_str());
     return 2;
   }
 }

@@ -24,6 +24,12 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kMaxFrames = 100000;
+// Paths, sides and positions: every arena is a room of a few hundred inches at most.
+constexpr double kMaxPathIn = 1000;
+constexpr double kMaxTurnDeg = 3600;  // ten full turns
+// fx as a multiple of the width: fields of view from 2 atan(10) = 169 deg to 2 atan(1/40) = 2.9 deg.
+constexpr double kMinFxPerWidth = 0.05, kMaxFxPerWidth = 20;
+constexpr long long kMaxSceneSeed = 999999999999999999ll;  // 18 digits, any 64-bit reader takes it
 
 std::string num(double v) {
   char b[64];
@@ -47,8 +53,10 @@ double parse_num(const std::string &key, const std::string &v, double lo, double
 }
 
 long long parse_int(const std::string &key, const std::string &v, long long lo, long long hi) {
-  if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos || v.size() > 18)
+  if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos)
     spec_error(key, "not a whole number: '" + v + "'");
+  // More than 18 digits is beyond every key's range (and might not fit 64 bits).
+  if (v.size() > 18) spec_error(key, v + " is out of range " + std::to_string(lo) + ".." + std::to_string(hi));
   const long long n = std::stoll(v);
   if (n < lo || n > hi)
     spec_error(key, v + " is out of range " + std::to_string(lo) + ".." + std::to_string(hi));
@@ -63,38 +71,58 @@ bool parse_bool(const std::string &key, const std::string &v) {
 
 struct KeyDef {
   const char *name;
+  std::string range;  // what the key accepts, for --help and the documentation
   std::function<void(SceneSpec &, const std::string &)> set;
   std::function<std::string(const SceneSpec &)> get;
 };
 
+// A real-valued key between lo and hi (in `unit`), stored in a SceneSpec member.
+KeyDef real_key(const char *name, double SceneSpec::*field, double lo, double hi, const char *unit) {
+  return {name, num(lo) + ".." + num(hi) + (*unit ? " " : "") + unit,
+          [=](SceneSpec &s, const std::string &v) { s.*field = parse_num(name, v, lo, hi); },
+          [=](const SceneSpec &s) { return num(s.*field); }};
+}
+
+// A whole-number key between lo and hi, stored in an int member.
+KeyDef int_key(const char *name, int SceneSpec::*field, int lo, int hi, const char *unit) {
+  return {name, std::to_string(lo) + ".." + std::to_string(hi) + (*unit ? " " : "") + unit,
+          [=](SceneSpec &s, const std::string &v) { s.*field = int(parse_int(name, v, lo, hi)); },
+          [=](const SceneSpec &s) { return std::to_string(s.*field); }};
+}
+
+KeyDef bool_key(const char *name, bool SceneSpec::*field) {
+  return {name, "0 or 1", [=](SceneSpec &s, const std::string &v) { s.*field = parse_bool(name, v); },
+          [=](const SceneSpec &s) { return std::string(s.*field ? "1" : "0"); }};
+}
+
+// The ranges say what a scene can mean: a path within any room an arena describes, a camera
+// on a robot of the SRV-1's size, encoders a wheel could have. A value outside is a mistake
+// (a sign or a unit), refused before anything is rendered.
 const std::vector<KeyDef> &spec_keys() {
   static const std::vector<KeyDef> keys = {
-      {"arena",
+      {"arena", "a name in frames/arenas/ or an arena file",
        [](SceneSpec &s, const std::string &v) {
          if (v.empty() || v.find_first_of(",= ") != std::string::npos)
            spec_error("arena", "expected an arena name or file, not '" + v + "'");
          s.arena = v;
        },
        [](const SceneSpec &s) { return s.arena; }},
-      {"path",
+      {"path", "straight, turn, square, odo_a, odo_b, avoid or a script (F/B/L/R/S moves)",
        [](SceneSpec &s, const std::string &v) {
          if (v != "avoid") path_script(v, 36, 90, 36, true);  // validates
          s.path = v;
        },
        [](const SceneSpec &s) { return s.path; }},
-      {"length", [](SceneSpec &s, const std::string &v) { s.length_in = parse_num("length", v, -1e5, 1e5); },
-       [](const SceneSpec &s) { return num(s.length_in); }},
-      {"angle", [](SceneSpec &s, const std::string &v) { s.angle_deg = parse_num("angle", v, -1e5, 1e5); },
-       [](const SceneSpec &s) { return num(s.angle_deg); }},
-      {"side", [](SceneSpec &s, const std::string &v) { s.side_in = parse_num("side", v, 0.01, 1e5); },
-       [](const SceneSpec &s) { return num(s.side_in); }},
-      {"dir",
+      real_key("length", &SceneSpec::length_in, -kMaxPathIn, kMaxPathIn, "in"),
+      real_key("angle", &SceneSpec::angle_deg, -kMaxTurnDeg, kMaxTurnDeg, "deg"),
+      real_key("side", &SceneSpec::side_in, 0.01, kMaxPathIn, "in"),
+      {"dir", "left or right",
        [](SceneSpec &s, const std::string &v) {
          if (v != "left" && v != "right") spec_error("dir", "expected left or right, not '" + v + "'");
          s.square_left = v == "left";
        },
        [](const SceneSpec &s) { return std::string(s.square_left ? "left" : "right"); }},
-      {"size",
+      {"size", "WxH, 2.." + std::to_string(kMaxFrameDim) + " a side",
        [](SceneSpec &s, const std::string &v) {
          const auto x = v.find('x');
          if (x == std::string::npos) spec_error("size", "expected WxH (e.g. 160x120), not '" + v + "'");
@@ -102,79 +130,52 @@ const std::vector<KeyDef> &spec_keys() {
          s.height = int(parse_int("size", v.substr(x + 1), 2, kMaxFrameDim));
        },
        [](const SceneSpec &s) { return std::to_string(s.width) + "x" + std::to_string(s.height); }},
-      {"frames",
+      {"frames", "1.." + std::to_string(kMaxFrames) + " or auto",
        [](SceneSpec &s, const std::string &v) {
          s.frames = v == "auto" ? 0 : int(parse_int("frames", v, 1, kMaxFrames));
        },
        [](const SceneSpec &s) { return s.frames ? std::to_string(s.frames) : std::string("auto"); }},
-      {"seed",
-       [](SceneSpec &s, const std::string &v) {
-         s.seed = uint64_t(parse_int("seed", v, 0, 999999999999999999ll));
-       },
+      {"seed", "0.." + std::to_string(kMaxSceneSeed),
+       [](SceneSpec &s, const std::string &v) { s.seed = uint64_t(parse_int("seed", v, 0, kMaxSceneSeed)); },
        [](const SceneSpec &s) { return std::to_string(s.seed); }},
-      {"noise", [](SceneSpec &s, const std::string &v) { s.noise = parse_num("noise", v, 0, 100); },
-       [](const SceneSpec &s) { return num(s.noise); }},
-      {"speed", [](SceneSpec &s, const std::string &v) { s.speed_in = parse_num("speed", v, 0.001, 100); },
-       [](const SceneSpec &s) { return num(s.speed_in); }},
-      {"turn_rate",
-       [](SceneSpec &s, const std::string &v) { s.turn_rate_deg = parse_num("turn_rate", v, 0.001, 90); },
-       [](const SceneSpec &s) { return num(s.turn_rate_deg); }},
-      {"fx",
-       [](SceneSpec &s, const std::string &v) { s.fx = v == "auto" ? 0 : parse_num("fx", v, 1, 1e5); },
+      real_key("noise", &SceneSpec::noise, 0, 100, "levels"),
+      real_key("speed", &SceneSpec::speed_in, 0.001, 12, "in per frame"),
+      real_key("turn_rate", &SceneSpec::turn_rate_deg, 0.001, 90, "deg per frame"),
+      {"fx", num(kMinFxPerWidth) + ".." + num(kMaxFxPerWidth) + " x width px, or auto",
+       [](SceneSpec &s, const std::string &v) {
+         // The width may come later in the spec: the ratio is checked once all keys are read.
+         s.fx = v == "auto" ? 0 : parse_num("fx", v, 0.01, kMaxFxPerWidth * kMaxFrameDim);
+       },
        [](const SceneSpec &s) { return s.fx > 0 ? num(s.fx) : std::string("auto"); }},
-      {"cam_height",
-       [](SceneSpec &s, const std::string &v) { s.cam_height_in = parse_num("cam_height", v, 0.1, 1000); },
-       [](const SceneSpec &s) { return num(s.cam_height_in); }},
-      {"tilt", [](SceneSpec &s, const std::string &v) { s.tilt_deg = parse_num("tilt", v, -60, 80); },
-       [](const SceneSpec &s) { return num(s.tilt_deg); }},
-      {"cam_offset",
-       [](SceneSpec &s, const std::string &v) { s.cam_offset_in = parse_num("cam_offset", v, -100, 100); },
-       [](const SceneSpec &s) { return num(s.cam_offset_in); }},
-      {"ss", [](SceneSpec &s, const std::string &v) { s.supersample = int(parse_int("ss", v, 1, 8)); },
-       [](const SceneSpec &s) { return std::to_string(s.supersample); }},
-      {"mover",
+      real_key("cam_height", &SceneSpec::cam_height_in, 0.5, 36, "in"),
+      real_key("tilt", &SceneSpec::tilt_deg, -60, 80, "deg"),
+      real_key("cam_offset", &SceneSpec::cam_offset_in, -12, 12, "in"),
+      int_key("ss", &SceneSpec::supersample, 1, 8, ""),
+      {"mover", "none, cross or arena",
        [](SceneSpec &s, const std::string &v) {
          if (v != "none" && v != "cross" && v != "arena")
            spec_error("mover", "expected none, cross or arena, not '" + v + "'");
          s.mover = v;
        },
        [](const SceneSpec &s) { return s.mover; }},
-      {"flicker", [](SceneSpec &s, const std::string &v) { s.flicker = parse_num("flicker", v, 0, 0.9); },
-       [](const SceneSpec &s) { return num(s.flicker); }},
-      {"flicker_period",
-       [](SceneSpec &s, const std::string &v) {
-         s.flicker_period = int(parse_int("flicker_period", v, 2, kMaxFrames));
-       },
-       [](const SceneSpec &s) { return std::to_string(s.flicker_period); }},
-      {"light_step",
+      real_key("flicker", &SceneSpec::flicker, 0, 0.9, ""),
+      int_key("flicker_period", &SceneSpec::flicker_period, 2, kMaxFrames, "frames"),
+      {"light_step", "0.." + std::to_string(kMaxFrames) + " or none",
        [](SceneSpec &s, const std::string &v) {
          s.light_step = v == "none" ? -1 : int(parse_int("light_step", v, 0, kMaxFrames));
        },
        [](const SceneSpec &s) {
          return s.light_step < 0 ? std::string("none") : std::to_string(s.light_step);
        }},
-      {"step_gain",
-       [](SceneSpec &s, const std::string &v) { s.step_gain = parse_num("step_gain", v, 0, 10); },
-       [](const SceneSpec &s) { return num(s.step_gain); }},
-      {"step_offset",
-       [](SceneSpec &s, const std::string &v) { s.step_offset = parse_num("step_offset", v, -255, 255); },
-       [](const SceneSpec &s) { return num(s.step_offset); }},
-      {"slip", [](SceneSpec &s, const std::string &v) { s.slip = parse_num("slip", v, 0, 1); },
-       [](const SceneSpec &s) { return num(s.slip); }},
-      {"enc_noise",
-       [](SceneSpec &s, const std::string &v) { s.enc_noise = parse_num("enc_noise", v, 0, 1000); },
-       [](const SceneSpec &s) { return num(s.enc_noise); }},
-      {"tpi", [](SceneSpec &s, const std::string &v) { s.tpi = parse_num("tpi", v, 0.01, 1e6); },
-       [](const SceneSpec &s) { return num(s.tpi); }},
-      {"wheelbase",
-       [](SceneSpec &s, const std::string &v) { s.wheelbase_in = parse_num("wheelbase", v, 0.1, 1000); },
-       [](const SceneSpec &s) { return num(s.wheelbase_in); }},
-      {"radius", [](SceneSpec &s, const std::string &v) { s.radius_in = parse_num("radius", v, 0.1, 1000); },
-       [](const SceneSpec &s) { return num(s.radius_in); }},
-      {"block_dist",
-       [](SceneSpec &s, const std::string &v) { s.block_dist_in = parse_num("block_dist", v, 0, 1e5); },
-       [](const SceneSpec &s) { return num(s.block_dist_in); }},
-      {"start",
+      real_key("step_gain", &SceneSpec::step_gain, 0, 10, ""),
+      real_key("step_offset", &SceneSpec::step_offset, -255, 255, "levels"),
+      real_key("slip", &SceneSpec::slip, 0, 1, ""),
+      real_key("enc_noise", &SceneSpec::enc_noise, 0, 100, "ticks"),
+      real_key("tpi", &SceneSpec::tpi, 1, 10000, "ticks per in"),
+      real_key("wheelbase", &SceneSpec::wheelbase_in, 0.5, 60, "in"),
+      real_key("radius", &SceneSpec::radius_in, 0.1, 60, "in"),
+      real_key("block_dist", &SceneSpec::block_dist_in, 0, kMaxPathIn, "in"),
+      {"start", "X:Y:HEADING, X and Y -" + num(kMaxPathIn) + ".." + num(kMaxPathIn) + " in, HEADING -360..360 deg, or arena",
        [](SceneSpec &s, const std::string &v) {
          if (v == "arena") {
            s.has_start = false;
@@ -183,29 +184,26 @@ const std::vector<KeyDef> &spec_keys() {
          const auto a = v.find(':'), b = v.find(':', a == std::string::npos ? a : a + 1);
          if (a == std::string::npos || b == std::string::npos)
            spec_error("start", "expected X:Y:HEADING or arena, not '" + v + "'");
-         s.start = {parse_num("start", v.substr(0, a), -1e6, 1e6),
-                    parse_num("start", v.substr(a + 1, b - a - 1), -1e6, 1e6),
-                    parse_num("start", v.substr(b + 1), -1e6, 1e6)};
+         s.start = {parse_num("start", v.substr(0, a), -kMaxPathIn, kMaxPathIn),
+                    parse_num("start", v.substr(a + 1, b - a - 1), -kMaxPathIn, kMaxPathIn),
+                    parse_num("start", v.substr(b + 1), -360, 360)};
          s.has_start = true;
        },
        [](const SceneSpec &s) {
          return s.has_start ? num(s.start.x_in) + ":" + num(s.start.y_in) + ":" + num(s.start.heading_deg)
                             : std::string("arena");
        }},
-      {"texture_seed",
+      {"texture_seed", "0.." + std::to_string(kMaxTextureSeed) + " or arena",
        [](SceneSpec &s, const std::string &v) {
          s.has_texture_seed = v != "arena";
-         if (s.has_texture_seed) s.texture_seed = uint64_t(parse_int("texture_seed", v, 0, 999999999999999999ll));
+         if (s.has_texture_seed) s.texture_seed = uint64_t(parse_int("texture_seed", v, 0, kMaxTextureSeed));
        },
        [](const SceneSpec &s) {
          return s.has_texture_seed ? std::to_string(s.texture_seed) : std::string("arena");
        }},
-      {"uyvy", [](SceneSpec &s, const std::string &v) { s.write_uyvy = parse_bool("uyvy", v); },
-       [](const SceneSpec &s) { return std::string(s.write_uyvy ? "1" : "0"); }},
-      {"flow", [](SceneSpec &s, const std::string &v) { s.write_flow = parse_bool("flow", v); },
-       [](const SceneSpec &s) { return std::string(s.write_flow ? "1" : "0"); }},
-      {"rgb", [](SceneSpec &s, const std::string &v) { s.write_rgb = parse_bool("rgb", v); },
-       [](const SceneSpec &s) { return std::string(s.write_rgb ? "1" : "0"); }},
+      bool_key("uyvy", &SceneSpec::write_uyvy),
+      bool_key("flow", &SceneSpec::write_flow),
+      bool_key("rgb", &SceneSpec::write_rgb),
   };
   return keys;
 }
@@ -241,7 +239,17 @@ SceneSpec parse_scene_spec(const std::string &text) {
   }
   if (s.write_uyvy && s.width % 2)
     throw InputError("scene spec: size: UYVY needs an even width (or set uyvy=0)");
+  if (s.fx > 0 && (s.fx < kMinFxPerWidth * s.width || s.fx > kMaxFxPerWidth * s.width))
+    spec_error("fx", num(s.fx) + " is out of range " + num(kMinFxPerWidth * s.width) + ".." +
+                         num(kMaxFxPerWidth * s.width) + " (" + num(kMinFxPerWidth) + ".." +
+                         num(kMaxFxPerWidth) + " x the width " + std::to_string(s.width) + ")");
   return s;
+}
+
+std::string scene_spec_ranges() {
+  std::string out;
+  for (const auto &k : spec_keys()) out += "  " + std::string(k.name) + ": " + k.range + "\n";
+  return out;
 }
 
 std::string format_scene_spec(const SceneSpec &s) {
@@ -409,6 +417,41 @@ const char *kTruthHeader =
     "left_ticks,right_ticks,gain,offset";
 const char *kColumnsHeader = "frame,column,distance_in,boundary_row";
 
+// Is `name` one of the files write_scene writes? frame_NNNN.pgm/.uyvy/.ppm, flow_NNNN.flo
+// (4 or more digits) and the four text files.
+bool scene_file_name(const std::string &name) {
+  for (const char *fixed_name : {"scene.txt", "arena.txt", "truth.csv", "columns.csv"})
+    if (name == fixed_name) return true;
+  auto numbered = [&](const std::string &stem, const std::string &ext) {
+    if (name.size() < stem.size() + 4 + ext.size() || name.compare(0, stem.size(), stem) != 0 ||
+        name.compare(name.size() - ext.size(), ext.size(), ext) != 0)
+      return false;
+    const std::string digits = name.substr(stem.size(), name.size() - stem.size() - ext.size());
+    return digits.find_first_not_of("0123456789") == std::string::npos;
+  };
+  return numbered("frame_", ".pgm") || numbered("frame_", ".uyvy") || numbered("frame_", ".ppm") ||
+         numbered("flow_", ".flo");
+}
+
+// --force replaces a scene and nothing else: a directory holding anything a scene does not
+// write (a user's notes, a subdirectory, a link) is refused whole, so nothing of theirs is lost.
+void check_replaceable(const fs::path &out) {
+  std::error_code ec;
+  const auto st = fs::symlink_status(out, ec);
+  if (fs::is_symlink(st)) throw InputError(out.string() + ": is a symbolic link; not replacing it");
+  if (!fs::is_directory(st)) throw InputError(out.string() + ": exists and is not a directory; not replacing it");
+  if (fs::is_empty(out, ec)) return;
+  if (!fs::is_regular_file(fs::symlink_status(out / "scene.txt", ec)))
+    throw InputError(out.string() + ": exists and is not a scene directory (no scene.txt); not replacing it");
+  for (const auto &e : fs::directory_iterator(out, ec)) {
+    const std::string name = e.path().filename().string();
+    if (!fs::is_regular_file(e.symlink_status(ec)) || !scene_file_name(name))
+      throw InputError(out.string() + ": holds '" + name +
+                       "', which a scene does not write; not replacing it (move it away or choose another --out)");
+  }
+  if (ec) throw InputError(out.string() + ": cannot list: " + ec.message());
+}
+
 void write_text(const fs::path &p, const std::string &s) {
   write_file_atomic(p.string(), s.data(), s.size());
 }
@@ -456,11 +499,9 @@ void write_scene(const SceneSpec &spec, const std::string &dir, bool replace) {
   fs::path out = fs::path(dir);
   if (!out.has_filename()) out = out.parent_path();
   std::error_code ec;
-  if (fs::exists(out, ec)) {
-    const bool empty = fs::is_directory(out, ec) && fs::is_empty(out, ec);
+  if (fs::exists(fs::symlink_status(out, ec))) {
     if (!replace) throw InputError(out.string() + ": already exists (use --force to replace a scene)");
-    if (!empty && !fs::is_regular_file(out / "scene.txt", ec))
-      throw InputError(out.string() + ": exists and is not a scene directory; not replacing it");
+    check_replaceable(out);
   }
   if (out.has_parent_path()) fs::create_directories(out.parent_path(), ec);
   const fs::path tmp = out.string() + ".tmp." + std::to_string(getpid());
@@ -505,6 +546,8 @@ void write_scene(const SceneSpec &spec, const std::string &dir, bool replace) {
     }
     write_text(tmp / "truth.csv", truth);
     write_text(tmp / "columns.csv", cols);
+    // Read back before it takes the name: a scene its own reader rejects is never left behind.
+    read_scene(tmp.string());
     if (fs::exists(out, ec)) {
       const fs::path old = out.string() + ".old." + std::to_string(getpid());
       fs::rename(out, old);

@@ -3,30 +3,38 @@
 //
 // Spec string: comma-separated key=value pairs, e.g.
 //   arena=boxes,path=square,size=160x120,frames=200,seed=7,noise=2
-// Keys (defaults in brackets; inches, degrees, frames):
+// Keys (defaults in brackets; inches, degrees, frames; the range each accepts after the colon,
+// also printed by `bfbench scene --help`; a value outside is an InputError naming the key):
 //   arena=NAME|FILE [boxes]    an arena of frames/arenas/ (world.h) or a path to an arena file
 //   path=NAME|SCRIPT [straight]  straight | turn | square | odo_a | odo_b | avoid | a script
-//                              like F36+R90+F11 (paths.h). avoid: the robot drives forward and
-//                              turns away whenever the truth says blocked (an oracle driver)
-//   length=IN [36]  straight's length    angle=DEG [90] turn's angle (+ left)
-//   side=IN [36]    square's side        dir=left|right [left] square's turns
-//   size=WxH [160x120]  2..4096 a side   frames=N|auto [auto]: the path's steps + 1 (avoid: 300);
-//                              a longer run stands still at the end, a shorter one is cut
-//   seed=N [1]        sensor noise and encoder slip/noise
-//   noise=SIGMA [0]   Gaussian noise per RGB channel, 0..255 levels
-//   speed=IN [0.5]    per frame          turn_rate=DEG [3] per frame
-//   fx=PX|auto [auto] focal length, fy = fx; auto = 0.875 * width (camera.h)
-//   cam_height=IN [4]  tilt=DEG [10]  cam_offset=IN [0]   (camera.h)
-//   ss=N [3]          supersampling per axis at edges (render.h)
+//                              like F36+R90+F11 (paths.h; at most a million steps). avoid: the
+//                              robot drives forward and turns away whenever the truth says
+//                              blocked (an oracle driver)
+//   length=IN [36]: -1000..1000  straight's length (negative: backwards)
+//   angle=DEG [90]: -3600..3600  turn's angle (+ left)
+//   side=IN [36]: 0.01..1000     square's side        dir=left|right [left] square's turns
+//   size=WxH [160x120]: 2..4096 a side
+//   frames=N|auto [auto]: 1..100000; auto: the path's steps + 1 (avoid: 300); a longer run
+//                              stands still at the end, a shorter one is cut
+//   seed=N [1]: 0..999999999999999999   sensor noise and encoder slip/noise
+//   noise=SIGMA [0]: 0..100   Gaussian noise per RGB channel, in levels
+//   speed=IN [0.5]: 0.001..12 per frame    turn_rate=DEG [3]: 0.001..90 per frame
+//   fx=PX|auto [auto]: 0.05..20 x the width   focal length, fy = fx (fields of view 169 to
+//                              2.9 deg); auto = 0.875 * width (camera.h)
+//   cam_height=IN [4]: 0.5..36  tilt=DEG [10]: -60..80  cam_offset=IN [0]: -12..12  (camera.h)
+//   ss=N [3]: 1..8    supersampling per axis at edges (render.h)
 //   mover=none|cross|arena [none]  cross: a dark red cylinder (radius 2.5, height 5) shuttling
 //                     across the start heading 30 in ahead, from 12 in right to 12 in left
 //                     of it and back, 0.4 in/frame (in view from the start pose); arena: the
 //                     arena file's movers
-//   flicker=A [0] flicker_period=N [50]  gain x (1 + A sin(2 pi frame / N))
-//   light_step=K|none [none] step_gain=G [1] step_offset=O [0]  from frame K on: gain x G, + O
-//   slip=S [0] enc_noise=T [0] tpi=N [50] wheelbase=IN [4]   encoders (paths.h)
-//   radius=IN [3]     the robot's disc    block_dist=IN [12]  D of "blocked" (world.h)
-//   start=X:Y:H|arena [arena]  texture_seed=N|arena [arena]
+//   flicker=A [0]: 0..0.9   flicker_period=N [50]: 2..100000   gain x (1 + A sin(2 pi frame / N))
+//   light_step=K|none [none]: 0..100000  step_gain=G [1]: 0..10  step_offset=O [0]: -255..255
+//                     from frame K on: gain x G, + O
+//   slip=S [0]: 0..1  enc_noise=T [0]: 0..100 ticks  tpi=N [50]: 1..10000
+//   wheelbase=IN [4]: 0.5..60   encoders (paths.h)
+//   radius=IN [3]: 0.1..60  the robot's disc    block_dist=IN [12]: 0..1000  D of "blocked" (world.h)
+//   start=X:Y:H|arena [arena]: X, Y -1000..1000, H -360..360
+//   texture_seed=N|arena [arena]: 0..999999999999999999 (as an arena file's texture_seed)
 //   uyvy=0|1 [1] flow=0|1 [1] rgb=0|1 [0]   which files write_scene writes
 //
 // Scene directory (everything in one directory, self-describing):
@@ -87,6 +95,8 @@ struct SceneSpec {
 
 // Throws InputError naming the key on an unknown or repeated key or a bad value.
 SceneSpec parse_scene_spec(const std::string &spec);
+// One line per key, "  key: what it accepts", from the table parse_scene_spec checks with.
+std::string scene_spec_ranges();
 // Every key, in a fixed order: parse_scene_spec(format_scene_spec(s)) == s.
 std::string format_scene_spec(const SceneSpec &s);
 
@@ -153,8 +163,9 @@ class SceneGenerator {
 
 Camera scene_camera(const SceneSpec &s);
 
-// Generates the whole scene into `dir` (written under a temporary name, then renamed). An
-// existing `dir` is an error unless `replace` is set and it holds a scene.txt or is empty.
+// Generates the whole scene into `dir` (written under a temporary name, read back, then
+// renamed). An existing `dir` is an error unless `replace` is set and it is empty or holds only
+// files a scene writes (scene.txt among them): anything else in it is refused, never deleted.
 void write_scene(const SceneSpec &spec, const std::string &dir, bool replace = false);
 
 struct SceneData {

@@ -273,9 +273,11 @@ World parse_arena(const std::string &text, const std::string &where) {
     } else if (kw == "texture_seed") {
       r.arity(1, 1, "texture_seed N");
       once(seen_seed);
-      const double v = r.num(1, "seed");
-      if (v < 0 || v > 9.0e15 || v != std::floor(v)) r.fail("texture_seed must be a whole number >= 0");
-      w.texture_seed = uint64_t(v);
+      // Read as an integer, exactly: format_arena writes every seed a spec accepts in full.
+      const std::string &t = r.tok[1];
+      if (t.empty() || t.size() > 18 || t.find_first_not_of("0123456789") != std::string::npos)
+        r.fail("texture_seed must be a whole number 0.." + std::to_string(kMaxTextureSeed) + ", not '" + t + "'");
+      w.texture_seed = std::stoull(t);
     } else if (kw == "floor") {
       r.arity(4, 4, "floor R G B CONTRAST");
       once(seen_floor);

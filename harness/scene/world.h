@@ -6,6 +6,7 @@
 // fraction of the colour, default 0.2):
 //   name NAME                                   optional, defaults to the file's stem
 //   texture_seed N                              seed of the procedural floor/surface texture
+//                                               (a whole number, 0..999999999999999999)
 //   floor R G B CONTRAST                        floor colour and texture amplitude
 //   background R G B                            what a ray that hits nothing sees
 //   light AMBIENT DIFFUSE AZIMUTH ELEVATION     one distant light plus ambient (see below)
@@ -36,6 +37,10 @@
 #include "camera.h"
 
 namespace bvb {
+
+// The largest texture seed an arena file or a scene spec may give: 18 digits, read exactly (a
+// double would round seeds above 2^53, and the reader must take whatever the writer wrote).
+constexpr long long kMaxTextureSeed = 999999999999999999ll;
 
 constexpr double kRobotRadiusIn = 3.0;  // the robot's collision disc (SRV-1: ~4 x 5 in chassis)
 

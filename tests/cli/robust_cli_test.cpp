@@ -12,6 +12,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -102,7 +103,7 @@ TEST(OutputPaths, DeviceIsWrittenNotReplaced) {
 }
 
 TEST(OutputPaths, FifoIsWrittenNotReplaced) {
-  const std::string in = dir() + "fifo_in.pgm", fifo = dir() + "out.fifo";
+  const std::string in = dir() + "fifo_in.pgm", fifo = dir() + "out_fifo.pgm";  // a FIFO named for the format sent through it
   write_pnm(in, frame(16, 16, 1));
   std::remove(fifo.c_str());
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
@@ -346,6 +347,183 @@ TEST(Messages, UnknownParamListsTheKnownOnes) {
   write_pnm(big, frame(64, 64, 2));
   expect_bad_input("run ncc_match --impl host --in " + big + " --in " + big + " --out " + out + " --param gain=2",
                    "unknown parameter 'gain' for this kernel (it takes cols, r, rows, s)");
+}
+
+}  // namespace
+}  // namespace bvb
+
+namespace bvb {
+namespace {
+
+// A path of pauses, each within the million-step cap, is refused as a whole before it is
+// expanded (a 13 KB spec of S1000000 moves once took 8 GB in 20 s). The address-space limit
+// turns an unbounded expansion into a quick failure instead of an exhausted machine.
+TEST(Limits, PathOfManyPausesIsRefusedBeforeExpanding) {
+  std::string path = "S1000000";
+  for (int i = 0; i < 1500; ++i) path += "+S1000000";
+  const std::string out = dir() + "pauses_scene";
+  std::system(("rm -rf " + out).c_str());
+  CliRun r = bfbench("scene --spec path=" + path + ",size=32x24 --out " + out, "ulimit -v 2000000;");
+  EXPECT_EQ(r.status, 2) << r.err.substr(0, 300);
+  EXPECT_NE(r.err.find("more than a million steps"), std::string::npos) << r.err.substr(0, 300);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err.substr(0, 300);
+  struct stat st;
+  EXPECT_NE(stat(out.c_str(), &st), 0) << out << " was written";
+}
+
+// Binary PGM/PPM samples above maxval used to wrap when scaled; ASCII ones were refused. A "P55"
+// magic is no P5 header. Both are bad input naming the file, at the command line too.
+TEST(InputPaths, PnmSamplesAboveMaxvalAndBadMagic) {
+  const std::string out = dir() + "pnm_out.pgm";
+  const std::string above = dir() + "above.pgm", above_rgb = dir() + "above.ppm", magic = dir() + "magic.pgm";
+  write(above, std::string("P5\n2 2\n15\n") + char(3) + char(16) + char(0) + char(15));
+  write(above_rgb, std::string("P6\n2 1\n100\n") + char(1) + char(2) + char(3) + char(4) + char(101) + char(6));
+  write(magic, std::string("P55\n2 2\n255\n") + std::string(4, char(7)));
+  expect_bad_input("run erode3x3_u8 --impl host --in " + above + " --out " + out,
+                   above + ": pixel value 16 above maxval 15");
+  expect_bad_input("run uyvy_to_grey --impl host --in " + above_rgb + " --out " + out, above_rgb + ": pixel value 101 above maxval 100");
+  expect_bad_input("run erode3x3_u8 --impl host --in " + magic + " --out " + out, magic + ": not a PGM/PPM file (bad magic)");
+  struct stat st;
+  EXPECT_NE(stat(out.c_str(), &st), 0) << out << " was written";
+}
+
+}  // namespace
+}  // namespace bvb
+
+#include "bvb/sobel.h"
+#include "formats.h"
+
+namespace bvb {
+namespace {
+
+bool exists(const std::string &p) {
+  struct stat st;
+  return lstat(p.c_str(), &st) == 0;
+}
+
+// The output's name says its format (--out x.png used to get PGM bytes), the input's name too;
+// an extension nobody knows is refused before anything runs.
+TEST(Formats, OutputsAndInputsFollowTheirNames) {
+  const std::string in = dir() + "fmt_in.pgm", pgm = dir() + "fmt_out.pgm", png = dir() + "fmt_out.png",
+                    npy = dir() + "fmt_out.npy";
+  write_pnm(in, frame(16, 12, 3));
+  ASSERT_EQ(bfbench("run erode3x3_u8 --impl host --in " + in + " --out " + pgm).status, 0);
+  CliRun r = bfbench("run erode3x3_u8 --impl host --in " + in + " --out " + png);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string bytes = slurp(png);
+  EXPECT_EQ(bytes.compare(0, 8, "\x89PNG\r\n\x1a\n"), 0) << "not a PNG: " << bytes.substr(0, 8);
+  EXPECT_EQ(read_image(png).data, read_pnm(pgm).data);
+  ASSERT_EQ(bfbench("run erode3x3_u8 --impl host --in " + in + " --out " + npy).status, 0);
+  const NpyArray a = parse_npy(read_file(npy), npy);
+  EXPECT_EQ(a.dtype, "|u1");
+  EXPECT_EQ(a.shape, (std::vector<size_t>{12, 16}));
+  EXPECT_EQ(a.data, read_pnm(pgm).data);
+  // A PNG in gives what the same frame as a PGM gives.
+  const std::string png_in = dir() + "fmt_in.png", from_png = dir() + "fmt_from_png.pgm";
+  write_image(png_in, frame(16, 12, 3));
+  ASSERT_EQ(bfbench("run erode3x3_u8 --impl host --in " + png_in + " --out " + from_png).status, 0);
+  EXPECT_EQ(read_pnm(from_png).data, read_pnm(pgm).data);
+
+  const std::string jpg = dir() + "fmt_out.jpg", flo = dir() + "fmt_out.flo";
+  expect_bad_input("run erode3x3_u8 --impl host --in " + in + " --out " + jpg, "unknown extension '.jpg'");
+  expect_bad_input("run erode3x3_u8 --impl host --in " + in + " --out " + flo, "an image is written as");
+  expect_bad_input("run hornschunck --impl host --param iterations=1 --in " + in + " --in " + in + " --out " + png,
+                   "a flow field is written as .flo or .npy");
+  expect_bad_input("run erode3x3_u8 --impl host --in " + dir() + "fmt_in.bmp --out " + pgm, "unknown extension '.bmp'");
+  EXPECT_FALSE(exists(jpg));
+  EXPECT_FALSE(exists(flo));
+}
+
+// A colour frame given to a kernel of grey frames was greyed silently; now it is refused naming
+// the kernel and what it takes, and --grey converts on request.
+TEST(Formats, ColourFrameToAGreyKernel) {
+  Image rgb(16, 12, 3);
+  for (size_t i = 0; i < rgb.data.size(); ++i) rgb.data[i] = uint8_t(i * 13);
+  const std::string ppm = dir() + "col_in.ppm", png = dir() + "col_in.png", out = dir() + "col_out.pgm";
+  write_pnm(ppm, rgb);
+  write_image(png, rgb);
+  std::remove(out.c_str());
+  expect_bad_input("run erode3x3_u8 --impl host --in " + ppm + " --out " + out,
+                   ppm + ": a colour image, and erode3x3_u8 takes grey frames");
+  expect_bad_input("run sobel3x3_u8 --impl host --in " + png + " --out " + out, "sobel3x3_u8 takes grey frames");
+  EXPECT_FALSE(exists(out));
+  CliRun r = bfbench("run erode3x3_u8 --impl host --grey --in " + ppm + " --out " + out);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read_pnm(out).channels, 1);
+  // A kernel of colour frames still takes them.
+  EXPECT_EQ(bfbench("run uyvy_to_grey --impl host --in " + png + " --out " + out).status, 0);
+}
+
+// --out F.npy writes the kernel's buffer itself: int16 gradients as <i2 (H, W), the one
+// --out-buffer names; compared with the C reference run here.
+TEST(Formats, NpyWritesAnOutputBufferWithItsTypeAndShape) {
+  const int w = 20, h = 10;
+  const Image img = frame(w, h, 5);
+  const std::string in = dir() + "npy_in.pgm", gx = dir() + "npy_gx.npy", gy = dir() + "npy_gy.npy";
+  write_pnm(in, img);
+  ASSERT_EQ(bfbench("run sobel3x3_s16 --impl host --in " + in + " --out " + gx).status, 0);
+  CliRun r = bfbench("run sobel3x3_s16 --impl host --in " + in + " --out " + gy + " --out-buffer gy");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::vector<int16_t> rx(size_t(w) * h), ry(size_t(w) * h);
+  std::vector<uint8_t> mag(size_t(w) * h), scratch(BVB_SOBEL3X3_S16_SCRATCH_SIZE(w));
+  bvb_sobel3x3_s16_c(img.data.data(), w, rx.data(), ry.data(), w, mag.data(), w, w, h, scratch.data());
+  const NpyArray ax = parse_npy(read_file(gx), gx), ay = parse_npy(read_file(gy), gy);
+  EXPECT_EQ(ax.dtype, "<i2");
+  EXPECT_EQ(ax.shape, (std::vector<size_t>{size_t(h), size_t(w)}));
+  ASSERT_EQ(ax.data.size(), rx.size() * 2);
+  ASSERT_EQ(ay.data.size(), ry.size() * 2);
+  EXPECT_EQ(std::memcmp(ax.data.data(), rx.data(), ax.data.size()), 0) << "gx differs from the reference";
+  EXPECT_EQ(std::memcmp(ay.data.data(), ry.data(), ay.data.size()), 0) << "gy differs from the reference";
+  expect_bad_input("run sobel3x3_s16 --impl host --in " + in + " --out " + gy + " --out-buffer gz",
+                   "no such output buffer (this call has gx, gy, mag)");
+  expect_bad_input("run sobel3x3_s16 --impl host --in " + in + " --out " + dir() + "x.pgm --out-buffer gy",
+                   "--out-buffer picks the buffer of an --out F.npy");
+}
+
+}  // namespace
+}  // namespace bvb
+
+namespace bvb {
+namespace {
+
+// An error names what the user gave, but control characters in it (a terminal escape, a
+// newline in a file name) are shown escaped: the message stays one line and cannot rewrite
+// the terminal.
+TEST(Messages, ControlCharactersInErrorsAreEscaped) {
+  const std::string odd = dir() + "esc\x1b[31m\nname.pgm";
+  write(odd, "P9\n");
+  CliRun r = bfbench("run erode3x3_u8 --impl host --in '" + odd + "' --out " + dir() + "esc_out.pgm");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("esc\\x1b[31m\\x0aname.pgm: not a PGM/PPM file"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  r = bfbench("run \"$(printf '\\007bell')\" --impl host --in " + dir() + "esc_in.pgm --out " + dir() + "esc_out.pgm");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.find('\x07'), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("\\x07bell"), std::string::npos) << r.err;
+  std::remove(odd.c_str());
+}
+
+}  // namespace
+}  // namespace bvb
+
+namespace bvb {
+namespace {
+
+// scene --force deleted any directory holding a scene.txt, the user's other files and
+// subdirectories with it; now such a directory is refused whole and left as it was.
+TEST(SceneForce, RefusesADirectoryHoldingMoreThanAScene) {
+  const std::string sc = dir() + "force_scene", spec = "--spec path=F1,size=32x24,flow=0 --out " + dir() + "force_scene";
+  std::system(("rm -rf " + sc).c_str());
+  ASSERT_EQ(bfbench("scene " + spec).status, 0);
+  ASSERT_EQ(bfbench("scene " + spec + " --force").status, 0) << "a scene over a scene";
+  write(sc + "/notes.txt", "mine");
+  mkdir((sc + "/keep").c_str(), 0700);
+  write(sc + "/keep/data.bin", "mine too");
+  expect_bad_input("scene " + spec + " --force", "which a scene does not write; not replacing it");
+  EXPECT_EQ(slurp(sc + "/notes.txt"), "mine");
+  EXPECT_EQ(slurp(sc + "/keep/data.bin"), "mine too");
+  EXPECT_TRUE(exists(sc + "/scene.txt"));
 }
 
 }  // namespace

@@ -77,6 +77,8 @@ TEST_P(BrokenKernel, IsCaughtAsExpected) {
       ++asm_expected;
       EXPECT_NE(f.message.find(c.message_part), std::string::npos) << f.message;
     }
+    // The report prints the kind before the message: the message must not repeat it.
+    EXPECT_NE(f.message.rfind(std::string(failure_kind_name(f.kind)) + ": ", 0), 0u) << f.message;
   }
   for (const auto &f : failures)
     if (f.kind == c.kind) {
