@@ -51,6 +51,9 @@ foreach(t ${BVB_FUZZ_TARGETS})
   set(_args --target ${t} --fuzzer ${_bvb_fuzz_dir}/fuzz/fuzz_${t} --source ${CMAKE_SOURCE_DIR}
             --frames-real ${BVB_FRAMES_REAL} --work ${CMAKE_BINARY_DIR}/fuzz-work/${t}
             --max-len ${BVB_FUZZ_${t}_MAX_LEN})
+  if(BVB_FUZZ_${t}_DICT)
+    list(APPEND _args --dict ${CMAKE_SOURCE_DIR}/${BVB_FUZZ_${t}_DICT})
+  endif()
   foreach(s ${BVB_FUZZ_${t}_SEEDS})
     list(APPEND _args --seeds ${s})
   endforeach()

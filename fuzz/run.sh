@@ -5,7 +5,7 @@
 #   exit 0: no finding; 1: a finding (the input is saved in the work directory) or libFuzzer
 #   failed; 77: skipped (no clang; --skip says why).
 set -uo pipefail
-target='' fuzzer='' source='' frames_real='' work='' max_len=4096 seconds='' runs='' seeds=()
+target='' fuzzer='' source='' frames_real='' work='' max_len=4096 dict=() seconds='' runs='' seeds=()
 while [ $# -gt 0 ]; do
   case $1 in
     --target) target=$2 ;;
@@ -16,6 +16,7 @@ while [ $# -gt 0 ]; do
     --max-len) max_len=$2 ;;
     --seconds) seconds=$2 ;;
     --runs) runs=$2 ;;
+    --dict) dict=(-dict="$2") ;;
     --seeds) seeds+=("$2") ;;
     --skip) echo "fuzz tests skipped: $2"; exit 77 ;;
     *) echo "run.sh: unknown argument $1" >&2; exit 2 ;;
@@ -53,7 +54,7 @@ fi
 # input (a 4096x4096 RGB frame, a 128 MB .flo) fits well below 2 GB. New inputs go to corpus/,
 # findings to $work/crash-* (or leak-, timeout-, oom-).
 log="$work/fuzz.log"
-"$fuzzer" "${limit[@]}" -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 \
+"$fuzzer" "${limit[@]}" "${dict[@]}" -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 \
   -print_final_stats=1 -artifact_prefix="$work/" "$work/corpus" "$work/seeds" >"$log" 2>&1
 rc=$?
 # ASan's leak check is on; the final statistics and any report are what a reader needs.
