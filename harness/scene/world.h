@@ -86,7 +86,9 @@ struct Texture {
   // Trilinear sample at (u, v) inches; lod = log2(footprint in texels).
   float sample(double u, double v, double lod) const;
 };
-// Deterministic in the seed; built once per seed and shared.
+// Deterministic in the seed; shared, and cached for the kTextureCacheSeeds most recently used
+// seeds (older ones are built again when asked for).
+constexpr size_t kTextureCacheSeeds = 8;
 std::shared_ptr<const Texture> make_texture(uint64_t seed);
 
 struct World {
