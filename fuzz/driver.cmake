@@ -12,10 +12,14 @@ include(${CMAKE_CURRENT_LIST_DIR}/targets.cmake)
 set(BVB_FUZZ_SECONDS 60 CACHE STRING "How long each fuzz test runs (-max_total_time, seconds)")
 set(BVB_FUZZ_LONG_RUNS 1000000 CACHE STRING "Inputs per target of the opt-in fuzz-long tests (-runs)")
 
+option(BVB_FUZZ_TESTS "Build the fuzz targets with clang and run them in the tests" ON)
+
 find_program(BVB_CLANGXX NAMES clang++ clang++-14)
 find_program(BVB_CLANG NAMES clang clang-14)
 set(_bvb_fuzz_missing "")
-if(NOT BVB_CLANGXX OR NOT BVB_CLANG)
+if(NOT BVB_FUZZ_TESTS)
+  set(_bvb_fuzz_missing "turned off (-DBVB_FUZZ_TESTS=OFF)")
+elseif(NOT BVB_CLANGXX OR NOT BVB_CLANG)
   set(_bvb_fuzz_missing "clang not found (Debian: apt-get install clang libclang-rt-14-dev)")
 else()
   # clang prints the name back unchanged when the runtime library is not installed.
