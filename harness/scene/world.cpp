@@ -258,6 +258,12 @@ void finalize_world(World &w) {
 }
 
 World parse_arena(const std::string &text, const std::string &where) {
+  World w = parse_arena_untextured(text, where);
+  w.texture = make_texture(w.texture_seed);
+  return w;
+}
+
+World parse_arena_untextured(const std::string &text, const std::string &where) {
   World w;
   bool have_start = false, seen_seed = false, seen_floor = false, seen_light = false,
        seen_bg = false, seen_name = false;
@@ -364,7 +370,7 @@ World parse_arena(const std::string &text, const std::string &where) {
   }
   if (!have_start) throw InputError(where + ": no 'start X Y HEADING_DEG' line");
   if (w.name.empty()) w.name = fs::path(where).stem().string();
-  finalize_world(w);
+  for (auto &o : w.obstacles) o.finalize();
   return w;
 }
 
