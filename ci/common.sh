@@ -5,19 +5,35 @@ build=${BVB_BUILD_DIR:-$root/build}
 
 log() { printf '[ci] %s\n' "$*" >&2; }
 
-host_packages() {
-  # libpng-dev: .png frames in and out; chromium: the profile page's test loads it in a
-  # headless browser.
-  local pkgs=(cmake ninja-build g++ libgtest-dev libgmock-dev libpng-dev chromium) missing=()
-  for p in "${pkgs[@]}"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+missing_packages() {
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || echo "$p"
   done
-  [ ${#missing[@]} -eq 0 ] && return 0
-  log "installing ${missing[*]}"
+}
+
+apt_install() {
   local sudo=()
   [ "$(id -u)" -eq 0 ] || sudo=(sudo)
-  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get update -q
-  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get update -q &&
+    DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends "$@"
+}
+
+host_packages() {
+  local missing
+  # libpng-dev: .png frames in and out; chromium: the profile page's test loads it in a
+  # headless browser.
+  missing=$(missing_packages cmake ninja-build g++ libgtest-dev libgmock-dev libpng-dev chromium)
+  if [ -n "$missing" ]; then
+    log "installing" $missing
+    apt_install $missing
+  fi
+  # clang and its libFuzzer runtime build the fuzz targets (fuzz/). Without them only the fuzz
+  # tests are skipped (ctest says so), so a failed install is reported, not fatal.
+  missing=$(missing_packages clang libclang-rt-14-dev)
+  if [ -n "$missing" ]; then
+    log "installing" $missing "(fuzz targets)"
+    apt_install $missing || log "could not install" $missing": the fuzz tests will be skipped"
+  fi
 }
 
 build_all() {

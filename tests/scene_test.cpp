@@ -1072,3 +1072,17 @@ TEST(SceneIo, ForceReplacesOnlyWhatASceneWrites) {
 }
 
 }  // namespace
+
+// Found by the arena fuzz target: every texture_seed an arena named kept its ~6 MB texture for
+// the life of the process (past 2 GB). Textures of seeds no longer used must be released; a
+// seed in use is still shared.
+TEST(SceneTexture, CacheKeepsOnlyRecentSeeds) {
+  std::vector<std::weak_ptr<const Texture>> made;
+  for (uint64_t s = 0; s < kTextureCacheSeeds + 4; ++s) made.push_back(make_texture(7770000 + s));
+  size_t alive = 0;
+  for (const auto &w : made) alive += !w.expired();
+  EXPECT_EQ(alive, kTextureCacheSeeds) << "textures of " << made.size() << " seeds made, none held";
+  EXPECT_TRUE(made.front().expired()) << "the least recently used seed is the one dropped";
+  const auto a = make_texture(7770000 + kTextureCacheSeeds + 3), b = make_texture(7770000 + kTextureCacheSeeds + 3);
+  EXPECT_EQ(a.get(), b.get()) << "a cached seed is built once and shared";
+}

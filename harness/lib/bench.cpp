@@ -250,7 +250,11 @@ bool case_size(const std::string &cs, int *w, int *h) {
 
 std::vector<Budget> load_budgets(const std::string &path, std::string *timing) {
   auto bytes = read_file(path);
-  json::Value v = json::parse(std::string(bytes.begin(), bytes.end()), path);
+  return parse_budgets(std::string(bytes.begin(), bytes.end()), path, timing);
+}
+
+std::vector<Budget> parse_budgets(const std::string &text, const std::string &path, std::string *timing) {
+  json::Value v = json::parse(text, path);
   const json::Value *b = v.type == json::Value::Object ? v.get("budgets") : nullptr;
   if (!b || b->type != json::Value::Object) throw InputError(path + ": no \"budgets\" object");
   std::string t = "none";

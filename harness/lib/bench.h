@@ -63,6 +63,8 @@ struct Budget {
 // The file's "timing" (the model its cycles are in) goes to *timing: "none" when the file
 // names none (budgets from before the timing model were the simulator's own counts).
 std::vector<Budget> load_budgets(const std::string &path, std::string *timing = nullptr);
+// load_budgets without the file: the text of one, `path` naming it in errors.
+std::vector<Budget> parse_budgets(const std::string &text, const std::string &path, std::string *timing = nullptr);
 void save_budgets(const std::string &path, const std::vector<Budget> &budgets, const std::string &timing);
 
 struct BudgetVerdict {

@@ -242,31 +242,43 @@ void write_pnm(const std::string &path, const Image &img) {
   write_file_atomic(path, encode_pnm(img));
 }
 
-std::vector<uint8_t> read_uyvy(const std::string &path, int width, int height) {
+namespace {
+
+// The size checks come before the file is read: a bad --size costs no read.
+void check_uyvy_size(const std::string &name, int width, int height) {
   if (width <= 0 || height <= 0 || width > kMaxFrameDim || height > kMaxFrameDim)
-    throw InputError(path + ": UYVY size out of range");
-  if (width % 2) throw InputError(path + ": UYVY width must be even");
-  auto bytes = read_file(path);
+    throw InputError(name + ": UYVY size out of range");
+  if (width % 2) throw InputError(name + ": UYVY width must be even");
+}
+
+}  // namespace
+
+std::vector<uint8_t> parse_uyvy(std::vector<uint8_t> bytes, const std::string &name, int width, int height) {
+  check_uyvy_size(name, width, height);
   const size_t need = size_t(width) * height * 2;
   if (bytes.size() != need)
-    throw InputError(path + ": UYVY file has " + std::to_string(bytes.size()) +
+    throw InputError(name + ": UYVY file has " + std::to_string(bytes.size()) +
                      " bytes, " + std::to_string(width) + "x" + std::to_string(height) +
                      " needs " + std::to_string(need));
   return bytes;
 }
 
-FlowField read_flo(const std::string &path) {
-  auto b = read_file(path);
+std::vector<uint8_t> read_uyvy(const std::string &path, int width, int height) {
+  check_uyvy_size(path, width, height);
+  return parse_uyvy(read_file(path), path, width, height);
+}
+
+FlowField parse_flo(const std::vector<uint8_t> &b, const std::string &name) {
   if (b.size() < 12 || std::memcmp(b.data(), "PIEH", 4) != 0)
-    throw InputError(path + ": not a .flo file (bad magic)");
+    throw InputError(name + ": not a .flo file (bad magic)");
   int32_t w, h;
   std::memcpy(&w, b.data() + 4, 4);
   std::memcpy(&h, b.data() + 8, 4);
   if (w <= 0 || h <= 0 || w > kMaxFrameDim || h > kMaxFrameDim)
-    throw InputError(path + ": .flo size out of range");
+    throw InputError(name + ": .flo size out of range");
   const size_t n = size_t(w) * h;
   if (b.size() != 12 + n * 8)
-    throw InputError(path + ": .flo has " + std::to_string(b.size()) + " bytes, expected " +
+    throw InputError(name + ": .flo has " + std::to_string(b.size()) + " bytes, expected " +
                      std::to_string(12 + n * 8));
   FlowField f(w, h);
   const uint8_t *p = b.data() + 12;
@@ -276,6 +288,8 @@ FlowField read_flo(const std::string &path) {
   }
   return f;
 }
+
+FlowField read_flo(const std::string &path) { return parse_flo(read_file(path), path); }
 
 void write_flo(const std::string &path, const FlowField &flow) {
   const size_t n = size_t(flow.width) * flow.height;

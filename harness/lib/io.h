@@ -52,6 +52,9 @@ class FileLock {
   int fd_ = -1;
 };
 
+// Each format's reader is read_file and a parse_* of the bytes: the parse_* functions are the one
+// parsing code path, also what the fuzz targets (fuzz/) call. `name` is the file named in errors.
+
 // Netpbm: P2/P5 (grey) and P3/P6 (RGB), maxval 1..255. Writers emit binary P5/P6.
 Image read_pnm(const std::string &path);
 Image parse_pnm(const std::vector<uint8_t> &bytes, const std::string &name);
@@ -60,9 +63,11 @@ std::vector<uint8_t> encode_pnm(const Image &img);
 
 // Raw UYVY 4:2:2 (byte order U Y0 V Y1, the SRV-1 camera's): width must be even.
 std::vector<uint8_t> read_uyvy(const std::string &path, int width, int height);
+std::vector<uint8_t> parse_uyvy(std::vector<uint8_t> bytes, const std::string &name, int width, int height);
 
 // Middlebury .flo: "PIEH", int32 width, int32 height, then interleaved float32 (u, v).
 FlowField read_flo(const std::string &path);
+FlowField parse_flo(const std::vector<uint8_t> &bytes, const std::string &name);
 void write_flo(const std::string &path, const FlowField &flow);
 
 }  // namespace bvb

@@ -628,22 +628,14 @@ std::vector<std::string> lines_of(const std::string &text) {
 
 }  // namespace
 
-SceneData read_scene(const std::string &dir) {
-  SceneData d;
-  d.dir = dir;
-  const fs::path root(dir);
-  std::error_code ec;
-  if (!fs::is_directory(root, ec)) throw InputError(dir + ": not a directory");
-
-  // scene.txt
-  const std::string where = (root / "scene.txt").string();
+void parse_scene_txt(const std::string &text, const std::string &where, SceneData *d) {
   std::map<std::string, std::string> kv;
   const std::vector<std::string> known = {"format", "spec",  "arena", "frames", "width",
                                           "height", "fx",    "fy",    "cx",     "cy",
                                           "cam_height_in", "tilt_deg", "cam_offset_in",
                                           "script", "files", "units", "yuv"};
   int ln = 0;
-  for (const auto &l : lines_of(read_text(root / "scene.txt"))) {
+  for (const auto &l : lines_of(text)) {
     ++ln;
     const auto first = l.find_first_not_of(" \t");
     if (first == std::string::npos || l[first] == '#') continue;
@@ -661,106 +653,120 @@ SceneData read_scene(const std::string &dir) {
   if (kv["format"] != "bvb-scene-1")
     throw InputError(where + ": unsupported format '" + kv["format"] + "' (expected bvb-scene-1)");
   try {
-    d.spec = parse_scene_spec(kv["spec"]);
+    d->spec = parse_scene_spec(kv["spec"]);
   } catch (const InputError &e) {
     throw InputError(where + ": " + e.what());
   }
   CsvCursor sc{where, 0};
-  d.frames = int(sc.integer(kv["frames"], "frames"));
-  d.camera = Camera::standard(int(sc.integer(kv["width"], "width")), int(sc.integer(kv["height"], "height")));
-  if (d.frames < 1 || d.frames > kMaxFrames) throw InputError(where + ": frames out of range");
-  if (d.camera.width != d.spec.width || d.camera.height != d.spec.height)
+  d->frames = int(sc.integer(kv["frames"], "frames"));
+  d->camera = Camera::standard(int(sc.integer(kv["width"], "width")), int(sc.integer(kv["height"], "height")));
+  if (d->frames < 1 || d->frames > kMaxFrames) throw InputError(where + ": frames out of range");
+  if (d->camera.width != d->spec.width || d->camera.height != d->spec.height)
     throw InputError(where + ": width/height disagree with the spec's size");
-  if (d.spec.frames != d.frames) throw InputError(where + ": frames disagrees with the spec");
-  d.camera.fx = sc.real(kv["fx"], "fx");
-  d.camera.fy = sc.real(kv["fy"], "fy");
-  d.camera.cx = sc.real(kv["cx"], "cx");
-  d.camera.cy = sc.real(kv["cy"], "cy");
-  d.camera.cam_height_in = sc.real(kv["cam_height_in"], "cam_height_in");
-  d.camera.tilt_deg = sc.real(kv["tilt_deg"], "tilt_deg");
-  d.camera.cam_offset_in = sc.real(kv["cam_offset_in"], "cam_offset_in");
-  if (!(d.camera.fx > 0) || !(d.camera.fy > 0)) throw InputError(where + ": fx and fy must be > 0");
-  {
-    std::istringstream fl(kv["files"]);
-    bool pgm = false;
-    for (std::string f; fl >> f;) {
-      if (f == "pgm") pgm = true;
-      else if (f == "uyvy") d.has_uyvy = true;
-      else if (f == "ppm") d.has_rgb = true;
-      else if (f == "flo") d.has_flow = true;
-      else throw InputError(where + ": files: unknown kind '" + f + "'");
-    }
-    if (!pgm) throw InputError(where + ": files: 'pgm' missing");
+  if (d->spec.frames != d->frames) throw InputError(where + ": frames disagrees with the spec");
+  d->camera.fx = sc.real(kv["fx"], "fx");
+  d->camera.fy = sc.real(kv["fy"], "fy");
+  d->camera.cx = sc.real(kv["cx"], "cx");
+  d->camera.cy = sc.real(kv["cy"], "cy");
+  d->camera.cam_height_in = sc.real(kv["cam_height_in"], "cam_height_in");
+  d->camera.tilt_deg = sc.real(kv["tilt_deg"], "tilt_deg");
+  d->camera.cam_offset_in = sc.real(kv["cam_offset_in"], "cam_offset_in");
+  if (!(d->camera.fx > 0) || !(d->camera.fy > 0)) throw InputError(where + ": fx and fy must be > 0");
+  std::istringstream fl(kv["files"]);
+  bool pgm = false;
+  for (std::string f; fl >> f;) {
+    if (f == "pgm") pgm = true;
+    else if (f == "uyvy") d->has_uyvy = true;
+    else if (f == "ppm") d->has_rgb = true;
+    else if (f == "flo") d->has_flow = true;
+    else throw InputError(where + ": files: unknown kind '" + f + "'");
   }
+  if (!pgm) throw InputError(where + ": files: 'pgm' missing");
+}
+
+std::vector<FrameTruth> parse_truth_csv(const std::string &text, const std::string &where) {
+  CsvCursor c{where, 0};
+  const auto lines = lines_of(text);
+  if (lines.empty() || lines[0] != kTruthHeader) {
+    c.line = 1;
+    c.fail(std::string("expected the header '") + kTruthHeader + "'");
+  }
+  std::vector<FrameTruth> truth;
+  for (size_t i = 1; i < lines.size(); ++i) {
+    c.line = int(i + 1);
+    if (lines[i].empty()) continue;
+    const auto f = split(lines[i]);
+    if (f.size() != 13) c.fail("expected 13 fields, found " + std::to_string(f.size()));
+    FrameTruth t;
+    t.frame = int(c.integer(f[0], "frame"));
+    if (t.frame != int(truth.size())) c.fail("frame " + f[0] + " out of sequence");
+    t.pose = {c.real(f[1], "x_in"), c.real(f[2], "y_in"), c.real(f[3], "heading_deg")};
+    t.step = {c.real(f[4], "step_fwd_in"), c.real(f[5], "step_turn_deg")};
+    if (f[6] != "0" && f[6] != "1") c.fail("blocked must be 0 or 1");
+    t.blocked = f[6] == "1";
+    t.clearance_in = c.real(f[7], "clearance_in", true);
+    if (f[8] != "0" && f[8] != "1") c.fail("collision must be 0 or 1");
+    t.collision = f[8] == "1";
+    t.left_ticks = c.integer(f[9], "left_ticks");
+    t.right_ticks = c.integer(f[10], "right_ticks");
+    t.gain = c.real(f[11], "gain");
+    t.offset = c.real(f[12], "offset");
+    truth.push_back(t);
+  }
+  return truth;
+}
+
+std::vector<ColumnTruth> parse_columns_csv(const std::string &text, const std::string &where, int frames,
+                                           int width, int height) {
+  CsvCursor c{where, 0};
+  const auto lines = lines_of(text);
+  if (lines.empty() || lines[0] != kColumnsHeader) {
+    c.line = 1;
+    c.fail(std::string("expected the header '") + kColumnsHeader + "'");
+  }
+  if (frames < 1 || width < 1 || height < 1) throw InputError(where + ": no frames or an empty image to hold columns");
+  const int W = width, H = height;
+  std::vector<ColumnTruth> columns(size_t(frames), ColumnTruth{});
+  size_t expect = 0;
+  for (size_t i = 1; i < lines.size(); ++i) {
+    c.line = int(i + 1);
+    if (lines[i].empty()) continue;
+    const auto f = split(lines[i]);
+    if (f.size() != 4) c.fail("expected 4 fields, found " + std::to_string(f.size()));
+    const long long k = c.integer(f[0], "frame"), x = c.integer(f[1], "column");
+    if (k != (long long)(expect / size_t(W)) || x != (long long)(expect % size_t(W)))
+      c.fail("expected frame " + std::to_string(expect / size_t(W)) + " column " +
+             std::to_string(expect % size_t(W)));
+    if (k >= frames) c.fail("more rows than frames x width");
+    const double dist = c.real(f[2], "distance_in", true);
+    const long long row = c.integer(f[3], "boundary_row");
+    if (row < -1 || row >= H) c.fail("boundary_row out of range -1.." + std::to_string(H - 1));
+    auto &col = columns[size_t(k)];
+    col.distance_in.push_back(dist);
+    col.boundary_row.push_back(int(row));
+    ++expect;
+  }
+  if (expect != size_t(frames) * size_t(W))
+    throw InputError(where + ": " + std::to_string(expect) + " rows, expected frames x width = " +
+                     std::to_string(size_t(frames) * size_t(W)));
+  return columns;
+}
+
+SceneData read_scene(const std::string &dir) {
+  SceneData d;
+  d.dir = dir;
+  const fs::path root(dir);
+  std::error_code ec;
+  if (!fs::is_directory(root, ec)) throw InputError(dir + ": not a directory");
+  parse_scene_txt(read_text(root / "scene.txt"), (root / "scene.txt").string(), &d);
   d.arena = parse_arena(read_text(root / "arena.txt"), (root / "arena.txt").string());
-
-  // truth.csv
-  {
-    CsvCursor c{(root / "truth.csv").string(), 0};
-    const auto lines = lines_of(read_text(root / "truth.csv"));
-    if (lines.empty() || lines[0] != kTruthHeader) {
-      c.line = 1;
-      c.fail(std::string("expected the header '") + kTruthHeader + "'");
-    }
-    for (size_t i = 1; i < lines.size(); ++i) {
-      c.line = int(i + 1);
-      if (lines[i].empty()) continue;
-      const auto f = split(lines[i]);
-      if (f.size() != 13) c.fail("expected 13 fields, found " + std::to_string(f.size()));
-      FrameTruth t;
-      t.frame = int(c.integer(f[0], "frame"));
-      if (t.frame != int(d.truth.size())) c.fail("frame " + f[0] + " out of sequence");
-      t.pose = {c.real(f[1], "x_in"), c.real(f[2], "y_in"), c.real(f[3], "heading_deg")};
-      t.step = {c.real(f[4], "step_fwd_in"), c.real(f[5], "step_turn_deg")};
-      if (f[6] != "0" && f[6] != "1") c.fail("blocked must be 0 or 1");
-      t.blocked = f[6] == "1";
-      t.clearance_in = c.real(f[7], "clearance_in", true);
-      if (f[8] != "0" && f[8] != "1") c.fail("collision must be 0 or 1");
-      t.collision = f[8] == "1";
-      t.left_ticks = c.integer(f[9], "left_ticks");
-      t.right_ticks = c.integer(f[10], "right_ticks");
-      t.gain = c.real(f[11], "gain");
-      t.offset = c.real(f[12], "offset");
-      d.truth.push_back(t);
-    }
-    if (int(d.truth.size()) != d.frames)
-      throw InputError(c.where + ": " + std::to_string(d.truth.size()) + " frames, scene.txt says " +
-                       std::to_string(d.frames));
-  }
-
-  // columns.csv
-  {
-    CsvCursor c{(root / "columns.csv").string(), 0};
-    const auto lines = lines_of(read_text(root / "columns.csv"));
-    if (lines.empty() || lines[0] != kColumnsHeader) {
-      c.line = 1;
-      c.fail(std::string("expected the header '") + kColumnsHeader + "'");
-    }
-    const int W = d.camera.width, H = d.camera.height;
-    d.columns.assign(size_t(d.frames), ColumnTruth{});
-    size_t expect = 0;
-    for (size_t i = 1; i < lines.size(); ++i) {
-      c.line = int(i + 1);
-      if (lines[i].empty()) continue;
-      const auto f = split(lines[i]);
-      if (f.size() != 4) c.fail("expected 4 fields, found " + std::to_string(f.size()));
-      const long long k = c.integer(f[0], "frame"), x = c.integer(f[1], "column");
-      if (k != (long long)(expect / size_t(W)) || x != (long long)(expect % size_t(W)))
-        c.fail("expected frame " + std::to_string(expect / size_t(W)) + " column " +
-               std::to_string(expect % size_t(W)));
-      if (k >= d.frames) c.fail("more rows than frames x width");
-      const double dist = c.real(f[2], "distance_in", true);
-      const long long row = c.integer(f[3], "boundary_row");
-      if (row < -1 || row >= H) c.fail("boundary_row out of range -1.." + std::to_string(H - 1));
-      auto &col = d.columns[size_t(k)];
-      col.distance_in.push_back(dist);
-      col.boundary_row.push_back(int(row));
-      ++expect;
-    }
-    if (expect != size_t(d.frames) * size_t(W))
-      throw InputError(c.where + ": " + std::to_string(expect) + " rows, expected frames x width = " +
-                       std::to_string(size_t(d.frames) * size_t(W)));
-  }
+  const std::string truth_csv = (root / "truth.csv").string();
+  d.truth = parse_truth_csv(read_text(truth_csv), truth_csv);
+  if (int(d.truth.size()) != d.frames)
+    throw InputError(truth_csv + ": " + std::to_string(d.truth.size()) + " frames, scene.txt says " +
+                     std::to_string(d.frames));
+  const std::string columns_csv = (root / "columns.csv").string();
+  d.columns = parse_columns_csv(read_text(columns_csv), columns_csv, d.frames, d.camera.width, d.camera.height);
 
   for (int k = 0; k < d.frames; ++k) {
     std::vector<std::string> need = {d.file("frame", k, "pgm")};

@@ -189,4 +189,13 @@ struct SceneData {
 // InputError (naming the file and line) on anything malformed.
 SceneData read_scene(const std::string &dir);
 
+// read_scene's parsers, one per file, on the file's text (`where` names it in errors): the same
+// code read_scene runs, callable without a directory (the fuzz targets in fuzz/ call them).
+// scene.txt fills d's spec, camera, frames and has_* flags.
+void parse_scene_txt(const std::string &text, const std::string &where, SceneData *d);
+std::vector<FrameTruth> parse_truth_csv(const std::string &text, const std::string &where);
+// frames, width and height come from scene.txt: the rows must be exactly frames x width.
+std::vector<ColumnTruth> parse_columns_csv(const std::string &text, const std::string &where, int frames,
+                                           int width, int height);
+
 }  // namespace bvb

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
+#include <list>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -149,13 +150,23 @@ std::shared_ptr<const Texture> build_texture(uint64_t seed) {
 
 }  // namespace
 
+// Textures are cached by seed: every scene generator reads its arena again, and a texture takes
+// tens of milliseconds to build. Only the most recently used seeds are kept (a texture is about
+// 6 MB): a process that reads arenas of many seeds, such as a sweep over texture_seed or the
+// arena fuzz target, kept every one for ever and grew past 2 GB. An evicted texture lives on
+// while a World holds it.
 std::shared_ptr<const Texture> make_texture(uint64_t seed) {
   static std::mutex mu;
-  static std::map<uint64_t, std::shared_ptr<const Texture>> cache;
+  static std::list<std::pair<uint64_t, std::shared_ptr<const Texture>>> recent;  // newest first
   std::lock_guard<std::mutex> lock(mu);
-  auto &slot = cache[seed];
-  if (!slot) slot = build_texture(seed);
-  return slot;
+  for (auto it = recent.begin(); it != recent.end(); ++it)
+    if (it->first == seed) {
+      recent.splice(recent.begin(), recent, it);
+      return it->second;
+    }
+  recent.emplace_front(seed, build_texture(seed));
+  if (recent.size() > kTextureCacheSeeds) recent.pop_back();
+  return recent.front().second;
 }
 
 float Texture::sample(double u, double v, double lod) const {
@@ -247,6 +258,12 @@ void finalize_world(World &w) {
 }
 
 World parse_arena(const std::string &text, const std::string &where) {
+  World w = parse_arena_untextured(text, where);
+  w.texture = make_texture(w.texture_seed);
+  return w;
+}
+
+World parse_arena_untextured(const std::string &text, const std::string &where) {
   World w;
   bool have_start = false, seen_seed = false, seen_floor = false, seen_light = false,
        seen_bg = false, seen_name = false;
@@ -355,7 +372,7 @@ World parse_arena(const std::string &text, const std::string &where) {
   }
   if (!have_start) throw InputError(where + ": no 'start X Y HEADING_DEG' line");
   if (w.name.empty()) w.name = fs::path(where).stem().string();
-  finalize_world(w);
+  for (auto &o : w.obstacles) o.finalize();
   return w;
 }
 

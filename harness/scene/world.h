@@ -91,7 +91,9 @@ struct Texture {
   // Trilinear sample at (u, v) inches; lod = log2(footprint in texels).
   float sample(double u, double v, double lod) const;
 };
-// Deterministic in the seed; built once per seed and shared.
+// Deterministic in the seed; shared, and cached for the kTextureCacheSeeds most recently used
+// seeds (older ones are built again when asked for).
+constexpr size_t kTextureCacheSeeds = 8;
 std::shared_ptr<const Texture> make_texture(uint64_t seed);
 
 struct World {
@@ -109,6 +111,9 @@ struct World {
 
 // Parses an arena file's text; `where` names it in error messages (InputError, with line).
 World parse_arena(const std::string &text, const std::string &where);
+// The same without building the texture (tens of milliseconds, from texture_seed alone): all of
+// the parsing, for the arena fuzz target.
+World parse_arena_untextured(const std::string &text, const std::string &where);
 // Canonical text of a world (parse_arena(format_arena(w)) reproduces w).
 std::string format_arena(const World &w);
 // NAME (a file frames/arenas/NAME.txt) or a path to an arena file (contains '/' or ends .txt).
