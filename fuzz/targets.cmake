@@ -10,12 +10,21 @@
 #                            keep the run fast, large enough for every header and a few rows.
 #   BVB_FUZZ_<NAME>_DICT     a libFuzzer -dict (optional; the text formats use numbers.dict)
 #   BVB_FUZZ_<NAME>_LIBS     what it links besides bvb_host (optional)
-set(BVB_FUZZ_TARGETS pnm uyvy flo arena spec scene_txt truth_csv columns_csv budgets)
+set(BVB_FUZZ_TARGETS pnm png npy uyvy flo arena spec scene_txt truth_csv columns_csv budgets)
 
 set(BVB_FUZZ_pnm_SEEDS fuzz/seeds/pnm/* frames/scenes/*/*.pgm
     ../shared/frames-real/*/*.pgm ../shared/frames-real/*/*.ppm)
 set(BVB_FUZZ_pnm_DICT fuzz/numbers.dict)
 set(BVB_FUZZ_pnm_MAX_LEN 4096)
+
+# Small hand-made files (fuzz/seeds/png: grey, RGB, palette) and the real frames' PNGs.
+set(BVB_FUZZ_png_SEEDS fuzz/seeds/png/* ../shared/frames-real/*/*.png)
+set(BVB_FUZZ_png_MAX_LEN 4096)
+
+# fuzz/seeds/npy: the dtypes and shapes bfbench writes (u1 images, i2 flow, i4 responses).
+set(BVB_FUZZ_npy_SEEDS fuzz/seeds/npy/*)
+set(BVB_FUZZ_npy_DICT fuzz/numbers.dict)
+set(BVB_FUZZ_npy_MAX_LEN 2048)
 
 set(BVB_FUZZ_uyvy_SEEDS fuzz/seeds/uyvy/*)
 set(BVB_FUZZ_uyvy_MAX_LEN 4096)
