@@ -57,6 +57,8 @@
 #define JUNK_LOOP_MASK 0x0FFFFFFE
 #define JUNK_LOOP_BASE 0x40000000
 
+/* L1 instruction SRAM (link.ld L1_CODE): the runtime and the hand-written kernels. */
+#define L1_CODE_START 0xFFA00000u
 /* BF537 core MMRs */
 /* System MMRs the start-up programs as the SRV-1 board does (ADSP-BF537 hardware reference:
  * PLL chapter, EBIU SDRAM controller). */
@@ -105,7 +107,7 @@
 #define TPERIOD 0xFFE03004
 #define TSCALE 0xFFE03008
 #define TCOUNT 0xFFE0300C
-#define DCPLB_FAULT_ADDR 0xFFE00008
+#define DCPLB_FAULT_ADDR 0xFFE0000C /* 0xFFE00008 is DCPLB_STATUS */
 #define TMPWR 1
 #define TMREN 2
 
