@@ -27,7 +27,7 @@ inline Target generation_target(const Registry &registry = Registry::product()) 
 // Everything that makes a call what it is, as one string: two calls are the same call when
 // these are equal.
 inline std::string fingerprint(const CheckCall &c) {
-  std::string s = c.kernel + "|" + c.case_name + "|" + c.case_id + "|";
+  std::string s = c.kernel + "|" + c.case_name + "|" + c.case_id + "|junk " + std::to_string(c.junk_seed) + "|";
   for (const auto &a : c.args) s += (a.is_buffer ? "b" : "w") + std::to_string(a.value) + ",";
   for (const auto &b : c.bufs) {
     s += "|" + b.name + ":" + std::to_string(int(b.role)) + ":" + std::to_string(b.place) + ":" +

@@ -1,14 +1,31 @@
 /* The checked-call trampoline: calls a kernel with up to 12 word arguments, counts its cycles,
  * arms the watchdog, and checks that it kept the ABI: R4-R7, P3-P5, FP and SP preserved, L0-L3
- * zero. Each callee-saved register enters the kernel holding a canary value (runtime.h) and must
- * come back with it. The cycles between the two CYCLES reads include a fixed overhead (the store,
- * CALL, RTS), measured once by calling bvb_null the same way and subtracted by the monitor. */
+ * zero, no hardware loop of its own left counting. As checkasm does, the call is adversarial:
+ * each callee-saved register enters holding a canary drawn from the canary seed and must come
+ * back with it; every caller-saved register the ABI leaves undefined on entry holds junk drawn
+ * from the call's junk seed (R0-R2 and stack slots beyond the kernel's arguments are junk from
+ * the monitor, runtime/main.c), so a kernel that reads a register it never set sees garbage.
+ * P1 holds the kernel's own address (the CALL needs it in a register). L0-L3 enter zero, as the
+ * ABI promises every callee. The junk goes in before the first CYCLES read, so it costs the
+ * count nothing; the cycles between the two CYCLES reads include a fixed overhead (the stores,
+ * the last two junk loads, CALL, RTS), measured once by calling bvb_null the same way and
+ * subtracted by the monitor. */
 #include "runtime.h"
 #include "bvb/mailbox.h"
 
 #define IMM32(reg, val) reg##.l = ((val) & 0xFFFF); reg##.h = (((val) >> 16) & 0xFFFF)
 /* Set bit N of R3 unless CC; CC is the outcome of "register equals its canary". */
 #define FLAG_UNLESS_CC(n) if cc jump 1f; bitset (r3, n); 1:
+/* xorshift32 (Marsaglia 2003) of x, with t as a temporary: zero stays zero. */
+#define XORSHIFT(x, t) t = x << 13; x = x ^ t; t = x >> 17; x = x ^ t; t = x << 5; x = x ^ t
+/* Loop n: set up by the kernel (LBn is no longer the junk it entered with) and still counting. */
+#define FLAG_LOOP_ARMED(n, bit) \
+	r1 = lc##n; cc = r1 == 0; if cc jump 1f; \
+	r1 = lb##n; r2 = [p2 + FR_J_LB##n]; cc = r1 == r2; if cc jump 1f; \
+	bitset (r3, bit); 1:
+/* A junk loop address: even, in reserved address space; written back so the check sees it. */
+#define JUNK_LOOP_REG(reg, slot) \
+	r0 = [p2 + slot]; r0 = r0 & r1; r0 = r0 | r2; [p2 + slot] = r0; reg = r0
 
 	.section .l1.text, "ax"
 	.align 4
@@ -18,6 +35,8 @@ _bvb_call:
 	[--sp] = (r7:4, p5:3);
 	[--sp] = fp;
 	[--sp] = rets;
+	r6 = r1;	/* junk seed */
+	r7 = r2;	/* canary seed */
 	p0.l = _bvb_call_state; p0.h = _bvb_call_state;
 	[p0 + ST_CALL] = r0;
 	[p0 + ST_MONITOR_SP] = sp;
@@ -25,8 +44,10 @@ _bvb_call:
 	[p0 + ST_STATUS] = r1;
 	p1 = r0;
 
-	/* Outgoing arguments: 12 bytes the callee may use for R0-R2, then args[3..11]. */
-	sp += -48;
+	/* The frame (runtime.h FR_*): outgoing arguments (12 bytes the callee may use for R0-R2,
+	 * then args[3..11]), CYCLES before the call, the junk, the canaries. */
+	p2 = -FR_SIZE (x);
+	sp = sp + p2;
 	p2 = sp;
 	p2 += 12;
 	p3 = p1;
@@ -36,6 +57,56 @@ _bvb_call:
 .Lcopy0: r1 = [p3++];
 .Lcopy1: [p2++] = r1;
 	[p0 + ST_EXPECT_SP] = sp;
+
+	/* The junk words, then the canaries, each a step of xorshift32 on from its seed. */
+	p2 = sp;
+	p2 += FR_JUNK;
+	p4 = FR_JUNK_WORDS;
+	r0 = r6;
+	lsetup (.Ljunk0, .Ljunk1) lc0 = p4;
+.Ljunk0: XORSHIFT(r0, r1);
+.Ljunk1: [p2++] = r0;
+	r0 = r7;
+	cc = r0 == 0;
+	if !cc jump 1f;
+	IMM32(r0, CANARY_SEED_DEFAULT);
+1:	p4 = FR_CANARY_WORDS;
+	lsetup (.Lcanary0, .Lcanary1) lc0 = p4;
+.Lcanary0: XORSHIFT(r0, r1);
+	r2 = r0;
+	bitset (r2, 0);
+.Lcanary1: [p2++] = r2;
+
+	/* Junk into the registers nothing below touches: DAG, accumulators, loops (loop addresses
+	 * before counts, so no loop is ever armed with one of ours). */
+	p2 = sp;
+	r0 = [p2 + FR_J_I0 + 0]; i0 = r0;
+	r0 = [p2 + FR_J_I0 + 4]; i1 = r0;
+	r0 = [p2 + FR_J_I0 + 8]; i2 = r0;
+	r0 = [p2 + FR_J_I0 + 12]; i3 = r0;
+	r0 = [p2 + FR_J_M0 + 0]; m0 = r0;
+	r0 = [p2 + FR_J_M0 + 4]; m1 = r0;
+	r0 = [p2 + FR_J_M0 + 8]; m2 = r0;
+	r0 = [p2 + FR_J_M0 + 12]; m3 = r0;
+	r0 = [p2 + FR_J_B0 + 0]; b0 = r0;
+	r0 = [p2 + FR_J_B0 + 4]; b1 = r0;
+	r0 = [p2 + FR_J_B0 + 8]; b2 = r0;
+	r0 = [p2 + FR_J_B0 + 12]; b3 = r0;
+	r0 = [p2 + FR_J_A0W]; a0.w = r0;
+	r0 = [p2 + FR_J_A0X]; a0.x = r0.l;
+	r0 = [p2 + FR_J_A1W]; a1.w = r0;
+	r0 = [p2 + FR_J_A1X]; a1.x = r0.l;
+	cc = r6 == 0;
+	if cc jump .Lloops_done;	/* no junk: the loop registers stay as they are, LC0/LC1 zero */
+	IMM32(r1, JUNK_LOOP_MASK);
+	IMM32(r2, JUNK_LOOP_BASE);
+	JUNK_LOOP_REG(lt0, FR_J_LT0);
+	JUNK_LOOP_REG(lb0, FR_J_LB0);
+	JUNK_LOOP_REG(lt1, FR_J_LT1);
+	JUNK_LOOP_REG(lb1, FR_J_LB1);
+	r0 = [p2 + FR_J_LC0]; lc0 = r0;
+	r0 = [p2 + FR_J_LC1]; lc1 = r0;
+.Lloops_done:
 
 	/* Arm the watchdog: the core timer counts the call's cycles down from the limit. */
 	IMM32(p2, TSCALE);
@@ -54,16 +125,17 @@ _bvb_call:
 	r1 = [p1 + CALL_ARGS + 4];
 	r2 = [p1 + CALL_ARGS + 8];
 	p1 = [p1 + CALL_FN];
-	p2 = p0;
-	p2 += ST_T0;
-	IMM32(r4, CANARY_R4);
-	IMM32(r5, CANARY_R5);
-	IMM32(r6, CANARY_R6);
-	IMM32(r7, CANARY_R7);
-	IMM32(p3, CANARY_P3);
-	IMM32(p4, CANARY_P4);
-	IMM32(p5, CANARY_P5);
-	IMM32(fp, CANARY_FP);
+	p2 = sp;
+	r4 = [p2 + FR_CANARY + 0];
+	r5 = [p2 + FR_CANARY + 4];
+	r6 = [p2 + FR_CANARY + 8];
+	r7 = [p2 + FR_CANARY + 12];
+	p3 = [p2 + FR_CANARY + 16];
+	p4 = [p2 + FR_CANARY + 20];
+	p5 = [p2 + FR_CANARY + 24];
+	fp = [p2 + FR_CANARY + 28];
+	p0 = [p2 + FR_J_P0];
+	p2 += FR_T0;
 	/* bvb_call_t0/t1 mark the two reads: bfbench profile records the instructions from the
 	 * first up to the second (bfin-elf-run --timing-profile-window), which are exactly the
 	 * cycles the difference counts. */
@@ -71,6 +143,8 @@ _bvb_call:
 _bvb_call_t0:
 	r3 = cycles;
 	[p2] = r3;
+	r3 = [p2 + FR_J_R3 - FR_T0];
+	p2 = [p2 + FR_J_P2 - FR_T0];
 	call (p1);
 	.global _bvb_call_t1
 _bvb_call_t1:
@@ -85,25 +159,28 @@ _bvb_call_t1:
 	[p0 + ST_IN_CALL] = r1;
 	p1 = [p0 + ST_CALL];
 	[p1 + CALL_RET] = r0;
-	r2 = [p0 + ST_T0];
+	p2 = [p0 + ST_EXPECT_SP];
+	r2 = [p2 + FR_T0];
 	r3 = r3 - r2;
 	[p1 + CALL_CYCLES] = r3;
 
 	r3 = 0;
-	IMM32(r2, CANARY_R4); cc = r4 == r2; FLAG_UNLESS_CC(0)
-	IMM32(r2, CANARY_R5); cc = r5 == r2; FLAG_UNLESS_CC(1)
-	IMM32(r2, CANARY_R6); cc = r6 == r2; FLAG_UNLESS_CC(2)
-	IMM32(r2, CANARY_R7); cc = r7 == r2; FLAG_UNLESS_CC(3)
-	r1 = p3; IMM32(r2, CANARY_P3); cc = r1 == r2; FLAG_UNLESS_CC(4)
-	r1 = p4; IMM32(r2, CANARY_P4); cc = r1 == r2; FLAG_UNLESS_CC(5)
-	r1 = p5; IMM32(r2, CANARY_P5); cc = r1 == r2; FLAG_UNLESS_CC(6)
-	r1 = fp; IMM32(r2, CANARY_FP); cc = r1 == r2; FLAG_UNLESS_CC(7)
-	r1 = sp; r2 = [p0 + ST_EXPECT_SP]; cc = r1 == r2; FLAG_UNLESS_CC(8)
+	r2 = [p2 + FR_CANARY + 0]; cc = r4 == r2; FLAG_UNLESS_CC(0)
+	r2 = [p2 + FR_CANARY + 4]; cc = r5 == r2; FLAG_UNLESS_CC(1)
+	r2 = [p2 + FR_CANARY + 8]; cc = r6 == r2; FLAG_UNLESS_CC(2)
+	r2 = [p2 + FR_CANARY + 12]; cc = r7 == r2; FLAG_UNLESS_CC(3)
+	r1 = p3; r2 = [p2 + FR_CANARY + 16]; cc = r1 == r2; FLAG_UNLESS_CC(4)
+	r1 = p4; r2 = [p2 + FR_CANARY + 20]; cc = r1 == r2; FLAG_UNLESS_CC(5)
+	r1 = p5; r2 = [p2 + FR_CANARY + 24]; cc = r1 == r2; FLAG_UNLESS_CC(6)
+	r1 = fp; r2 = [p2 + FR_CANARY + 28]; cc = r1 == r2; FLAG_UNLESS_CC(7)
+	r1 = sp; r2 = p2; cc = r1 == r2; FLAG_UNLESS_CC(8)
 	r2 = 0;
 	r1 = l0; cc = r1 == r2; FLAG_UNLESS_CC(9)
 	r1 = l1; cc = r1 == r2; FLAG_UNLESS_CC(10)
 	r1 = l2; cc = r1 == r2; FLAG_UNLESS_CC(11)
 	r1 = l3; cc = r1 == r2; FLAG_UNLESS_CC(12)
+	FLAG_LOOP_ARMED(0, 13)
+	FLAG_LOOP_ARMED(1, 14)
 	[p1 + CALL_ABI] = r3;
 
 .Lleave:

@@ -47,9 +47,23 @@ static int valid_buffer(const struct bvb_buffer *b, uint32_t window_size) {
   return b->offset <= window_size - span;
 }
 
-/* Returns the data address for buffer b, or 0 when its memory is full. */
-static uint8_t *place_buffer(const struct bvb_buffer *b, uint8_t *window) {
+/* Returns the data address for buffer b, or 0 when its memory is full. *tail is how many
+ * bytes of its trailing guard band exist: all of them, except at the end of SDRAM. */
+static uint8_t *place_buffer(const struct bvb_buffer *b, uint8_t *window, uint32_t *tail) {
+  *tail = b->guard;
   if (b->place == BVB_PLACE_WINDOW) return window + b->offset + b->guard;
+  if (b->place == BVB_PLACE_SDRAM_END) {
+    /* From the top of the SDRAM arena down: the data ends where SDRAM does (what align and
+     * skew leave of a gap is all of its trailing guard band), and the arena ends below it. */
+    struct arena *a = &arenas[BVB_PLACE_SDRAM];
+    const uintptr_t top = (uintptr_t)a->end;
+    if ((uintptr_t)b->size + b->guard + b->align > top - (uintptr_t)a->next) return 0;
+    const uintptr_t data = ((top - b->size - b->skew) & ~(uintptr_t)(b->align - 1)) + b->skew;
+    const uint32_t gap = (uint32_t)(top - (data + b->size));
+    if (gap < b->guard) *tail = gap;
+    a->end = (uint8_t *)(data - b->guard);
+    return (uint8_t *)data;
+  }
   struct arena *a = &arenas[b->place];
   uintptr_t data = ((uintptr_t)a->next + b->guard + b->align - 1) & ~(uintptr_t)(b->align - 1);
   data += b->skew;
@@ -59,10 +73,17 @@ static uint8_t *place_buffer(const struct bvb_buffer *b, uint8_t *window) {
   return (uint8_t *)data;
 }
 
+/* An argument the kernel does not take (R0-R2 or a stack slot beyond its count): junk like the
+ * other caller-saved registers (call.S), so a kernel that reads one shows it. */
+static uint32_t junk_arg(uint32_t seed, uint32_t i) {
+  return seed ? (seed ^ 0x6A09E667u) * (2 * i + 1) + (i << 24) : 0;
+}
+
 static void run_command(struct bvb_command *c, uint8_t *window, uint32_t window_size,
                         uint32_t null_cycles) {
   static struct bvb_call call;
   uint8_t *addr[BVB_MAX_BUFS];
+  uint32_t tail[BVB_MAX_BUFS];
 
   c->status = BVB_BAD_COMMAND;
   if (c->kernel >= bvb_kernel_count) { c->detail = BVB_BAD_KERNEL; return; }
@@ -79,19 +100,19 @@ static void run_command(struct bvb_command *c, uint8_t *window, uint32_t window_
   reset_arenas();
   for (uint32_t i = 0; i < c->nbufs; ++i) {
     const struct bvb_buffer *b = &c->bufs[i];
-    addr[i] = place_buffer(b, window);
+    addr[i] = place_buffer(b, window, &tail[i]);
     if (!addr[i]) { c->status = BVB_NO_SPACE; c->detail = i; return; }
     if (b->place != BVB_PLACE_WINDOW)
-      memcpy(addr[i] - b->guard, window + b->offset, b->size + 2 * b->guard);
+      memcpy(addr[i] - b->guard, window + b->offset, b->guard + b->size + tail[i]);
     c->buf_addr[i] = (uint32_t)(uintptr_t)addr[i];
   }
 
   memset(&call, 0, sizeof call);
   call.fn = fn;
   for (uint32_t i = 0; i < BVB_MAX_ARGS; ++i)
-    call.args[i] = i >= c->nargs ? 0 : (c->argbuf >> i & 1) ? (uint32_t)(uintptr_t)addr[c->args[i]] : c->args[i];
+    call.args[i] = i >= c->nargs ? junk_arg(c->junk_seed, i) : (c->argbuf >> i & 1) ? (uint32_t)(uintptr_t)addr[c->args[i]] : c->args[i];
   call.limit = c->cycle_limit ? c->cycle_limit : BVB_DEFAULT_CYCLE_LIMIT;
-  uint32_t status = bvb_call(&call);
+  uint32_t status = bvb_call(&call, c->junk_seed, c->canary_seed);
   /* A kernel abandoned mid-transfer (fault, watchdog) may leave memory DMA running into the
    * buffers copied back below or into the next call: stop it. */
   bvb_dma_reset();
@@ -99,11 +120,16 @@ static void run_command(struct bvb_command *c, uint8_t *window, uint32_t window_
   for (uint32_t i = 0; i < c->nbufs; ++i) {
     const struct bvb_buffer *b = &c->bufs[i];
     if (b->place != BVB_PLACE_WINDOW)
-      memcpy(window + b->offset, addr[i] - b->guard, b->size + 2 * b->guard);
+      memcpy(window + b->offset, addr[i] - b->guard, b->guard + b->size + tail[i]);
   }
   c->cycles = call.cycles > null_cycles ? call.cycles - null_cycles : 0;
   c->ret = call.ret;
   c->abi_bad = call.abi_bad;
+  /* GCC's hardware loops leave LC counting when a loop is left by an early exit (the C of
+   * harris_select does), and its code always enters a loop through its LSETUP: for compiled
+   * code, which runs from SDRAM, that is its convention, not a fault. The hand-written
+   * assembly in L1 instruction SRAM is held to the stricter rule. */
+  if ((uintptr_t)fn < L1_CODE_START) c->abi_bad &= ~(uint32_t)(BVB_ABI_LOOP0 | BVB_ABI_LOOP1);
   c->fault_seqstat = call.seqstat;
   c->fault_pc = call.pc;
   c->fault_addr = call.addr;
@@ -126,7 +152,7 @@ int main(void) {
   static struct bvb_call null_call;
   null_call.fn = bvb_null;
   null_call.limit = 100000;
-  bvb_call(&null_call);
+  bvb_call(&null_call, 0, 0);
   h->null_call_cycles = null_call.cycles;
 
   struct bvb_command *cmds = (struct bvb_command *)(h + 1);

@@ -16,24 +16,49 @@
 #define ST_CALL 0
 #define ST_MONITOR_SP 4
 #define ST_EXPECT_SP 8
-#define ST_T0 12
+#define ST_SPARE 12 /* unused; the state keeps its size, so L1 bank A's arena stays put */
 #define ST_IN_CALL 16
 #define ST_STATUS 20
 #define ST_SAVE_R0 24
 #define ST_SAVE_ASTAT 28
 
-/* Values the trampoline loads into every callee-saved register before a call; a kernel that
- * returns with another value there broke the ABI. Odd, distinct, and not small, so no kernel
- * reproduces them by accident. */
-#define CANARY_R4 0x5EED0441
-#define CANARY_R5 0x5EED0553
-#define CANARY_R6 0x5EED0665
-#define CANARY_R7 0x5EED0777
-#define CANARY_P3 0x5EED0389
-#define CANARY_P4 0x5EED049B
-#define CANARY_P5 0x5EED05AD
-#define CANARY_FP 0x5EED0FBF
+/* The trampoline's frame (call.S), from the SP the kernel gets: the outgoing arguments, then
+ * CYCLES before the call, the junk the caller-saved registers get (xorshift32 from the call's
+ * junk seed: R3, P2, P0, I0-I3, M0-M3, B0-B3, A0.W, A0.X, A1.W, A1.X, LC0, LT0, LB0, LC1, LT1,
+ * LB1), and the canaries of the callee-saved registers (from the canary seed, each made odd:
+ * R4-R7, P3-P5, FP). The kernel may use its incoming argument slots; what lies above them is
+ * its caller's. */
+#define FR_T0 48
+#define FR_JUNK 52
+#define FR_J_R3 52
+#define FR_J_P2 56
+#define FR_J_P0 60
+#define FR_J_I0 64
+#define FR_J_M0 80
+#define FR_J_B0 96
+#define FR_J_A0W 112
+#define FR_J_A0X 116
+#define FR_J_A1W 120
+#define FR_J_A1X 124
+#define FR_J_LC0 128
+#define FR_J_LT0 132
+#define FR_J_LB0 136
+#define FR_J_LC1 140
+#define FR_J_LT1 144
+#define FR_J_LB1 148
+#define FR_JUNK_WORDS 25
+#define FR_CANARY 152
+#define FR_CANARY_WORDS 8
+#define FR_SIZE 184
+/* The canary seed when the host gives none (bench, runs, pipelines): any fixed odd value. */
+#define CANARY_SEED_DEFAULT 0x5EED0441
+/* Junk loop addresses lie in reserved address space (0x40000000-0x4FFFFFFE, nothing mapped on
+ * the BF537), so a loop the caller left counting never fires inside a correct kernel. */
+#define JUNK_LOOP_MASK 0x0FFFFFFE
+#define JUNK_LOOP_BASE 0x40000000
 
+/* L1 instruction SRAM (link.ld L1_CODE): the runtime and the hand-written kernels. */
+#define L1_CODE_START 0xFFA00000u
 /* BF537 core MMRs */
 /* System MMRs the start-up programs as the SRV-1 board does (ADSP-BF537 hardware reference:
  * PLL chapter, EBIU SDRAM controller). */
@@ -82,7 +107,7 @@
 #define TPERIOD 0xFFE03004
 #define TSCALE 0xFFE03008
 #define TCOUNT 0xFFE0300C
-#define DCPLB_FAULT_ADDR 0xFFE00008
+#define DCPLB_FAULT_ADDR 0xFFE0000C /* 0xFFE00008 is DCPLB_STATUS */
 #define TMPWR 1
 #define TMREN 2
 
@@ -101,9 +126,11 @@ struct bvb_call {
   uint32_t limit;   /* watchdog cycles */
 };
 
-/* Calls c->fn with c->args under the ABI check and the watchdog. Returns BVB_OK when the
- * function returned, BVB_FAULT or BVB_HANG when it was abandoned. */
-uint32_t bvb_call(struct bvb_call *c);
+/* Calls c->fn with c->args under the ABI check and the watchdog, the caller-saved registers
+ * holding junk from junk_seed (0: zero) and the callee-saved ones canaries from canary_seed
+ * (0: CANARY_SEED_DEFAULT). Returns BVB_OK when the function returned, BVB_FAULT or BVB_HANG
+ * when it was abandoned. */
+uint32_t bvb_call(struct bvb_call *c, uint32_t junk_seed, uint32_t canary_seed);
 void bvb_null(void);
 
 void *memcpy(void *dst, const void *src, unsigned n);

@@ -32,6 +32,7 @@ std::vector<BenchRow> run_bench(const Target &target, const BenchOptions &opts) 
   co.jobs = opts.jobs;
   co.progress = opts.progress;
   co.run_c = opts.run_c;
+  co.adversarial = false;  // the calls exactly as measured: no buffer moved, no poison drawn
   Checker ck(isolated, co);
   std::vector<BenchRow> rows;
   std::vector<CheckCall> calls;
@@ -104,6 +105,7 @@ const char *place_name(uint32_t place) {
     case BVB_PLACE_L1B: return "L1B";
     case BVB_PLACE_SCRATCH: return "scratch";
     case BVB_PLACE_WINDOW: return "window";
+    case BVB_PLACE_SDRAM_END: return "SDRAM end";
   }
   return "?";
 }

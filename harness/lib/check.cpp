@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <sstream>
 
 #include "patterns.h"
@@ -159,7 +160,65 @@ Rng case_stream(uint32_t seed, const std::string &family, uint32_t n) {
   Rng mix((uint64_t(seed) << 32 | n) ^ (uint64_t(fnv(family)) << 16));
   return Rng(mix.next());
 }
+
+// checkasm's adversarial oracle, per call: outputs and scratch start as random bytes (a pixel
+// left unwritten shows whatever the poison), the caller-saved registers as junk, and a buffer
+// may end where SDRAM does.
+void make_adversarial(CheckCall &call, Rng &rng) {
+  Rng poison(rng.next());
+  for (auto &b : call.bufs)
+    if (b.role == Role::Out || b.role == Role::Scratch)
+      for (auto &v : b.data) v = uint8_t(poison.u32());
+  call.junk_seed = rng.u32() | 1;  // 0 would mean "no junk"
+  if (rng.uniform(0, 1) == 0) {
+    std::vector<size_t> inputs, any;
+    for (size_t i = 0; i < call.bufs.size(); ++i) {
+      if (call.bufs[i].place != BVB_PLACE_SDRAM) continue;
+      any.push_back(i);
+      if (call.bufs[i].role == Role::In || call.bufs[i].role == Role::InOut) inputs.push_back(i);
+    }
+    const std::vector<size_t> &from = inputs.empty() ? any : inputs;
+    const int pick = from.empty() ? 0 : rng.uniform(0, int(from.size()) - 1);
+    if (!from.empty()) {
+      call.bufs[from[size_t(pick)]].place = BVB_PLACE_SDRAM_END;
+      call.case_name += " '" + call.bufs[from[size_t(pick)]].name + "' at SDRAM end";
+    }
+  }
+}
+
 }  // namespace
+
+uint32_t canary_seed_of(uint32_t seed) {
+  Rng r(uint64_t(seed) ^ 0xCA0A51E5ull);
+  return r.u32() | 1;
+}
+
+std::string fault_near_buffer(const Call &call, const CallResult &r) {
+  if (r.status != BVB_FAULT || !data_cplb_fault(r.seqstat)) return "";
+  // How far from a buffer a stray access still counts as that buffer's: a row or two of a
+  // large frame, never another buffer's body.
+  constexpr uint64_t kNear = 4096;
+  std::string best;
+  uint64_t best_dist = kNear;
+  for (size_t i = 0; i < call.bufs.size() && i < BVB_MAX_BUFS; ++i) {
+    const Buffer &b = call.bufs[i];
+    const uint64_t start = r.buf_addr[i], end = start + b.data.size(), a = r.addr;
+    std::string what;
+    uint64_t dist = kNear;
+    if (a >= end && a - end < best_dist) {
+      dist = a - end;
+      what = "an access " + std::to_string(dist + 1) + (dist ? " bytes" : " byte") + " past the end of buffer '" +
+             b.name + "' (byte offset " + std::to_string(a - start) + " of " + std::to_string(b.data.size()) + ")";
+      if (b.place == BVB_PLACE_SDRAM_END) what += "; it ended at the end of SDRAM, where nothing is mapped";
+    } else if (a < start && start - a <= best_dist) {
+      dist = start - a;
+      what = "an access " + std::to_string(dist) + (dist == 1 ? " byte" : " bytes") + " before the start of buffer '" +
+             b.name + "'";
+    }
+    if (!what.empty() && dist < best_dist) best = what, best_dist = dist;
+  }
+  return best;
+}
 
 Checker::Checker(const Target &target, CheckOptions opts)
     : target_(target), opts_(std::move(opts)), rng_(case_stream(opts_.seed, "", 0)),
@@ -234,6 +293,7 @@ void Checker::add(CheckCall call, Observer observer) {
   // The case number counts every call the family makes, queued or not, so -k and --case leave
   // every other case's number and stream as they are.
   call.case_id = call.kernel + ":" + std::to_string(case_no_);
+  if (opts_.adversarial) make_adversarial(call, rng_);
   rng_ = case_stream(opts_.seed, family_, ++case_no_);
   if (!wants(call.kernel)) return;
   if (!opts_.only_case.empty() && call.case_id != opts_.only_case) return;
@@ -286,7 +346,7 @@ std::vector<Failure> compare_call(const CheckCall &cc, const std::string &impl, 
     if (buf.role == Role::In)
       fail(Failure::InputModified, "input buffer '" + buf.name + "' was written: " + d);
     else
-      fail(Failure::Mismatch, "buffer '" + buf.name + "' " + d);
+      fail(Failure::Mismatch, std::string(buf.role == Role::InOut ? "in/out " : "") + "buffer '" + buf.name + "' " + d);
   }
   return out;
 }
@@ -365,8 +425,9 @@ void Checker::record(const CheckCall &cc, const std::string &impl, const std::ve
   if (!found.empty()) ++t.failed;
 }
 
-void Checker::judge(const CheckCall &cc, uint32_t impl, const Call &call, const CallResult &r,
-                    const std::vector<std::vector<uint8_t>> &expected, const HostBuffers &host) {
+std::vector<Failure> Checker::judge(const CheckCall &cc, uint32_t impl, const Call &call, const CallResult &r,
+                                    const std::vector<std::vector<uint8_t>> &expected,
+                                    const HostBuffers &host) const {
   std::vector<Failure> found;
   auto fail = [&](Failure::Kind kind, std::string msg) {
     found.push_back({cc.kernel, impl_name(impl), cc.case_name, opts_.seed, kind, std::move(msg), cc.case_id});
@@ -374,20 +435,21 @@ void Checker::judge(const CheckCall &cc, uint32_t impl, const Call &call, const 
   if (!r.crash.empty()) {
     fail(Failure::Crash, describe_failure(call, r, target_.elf()));
   } else if (r.status == BVB_FAULT) {
-    fail(Failure::Fault, describe_failure(call, r, target_.elf()));
+    const std::string near = fault_near_buffer(call, r);
+    fail(Failure::Fault, describe_failure(call, r, target_.elf()) + (near.empty() ? "" : ": " + near));
   } else if (r.status == BVB_HANG) {
     fail(Failure::Hang, describe_failure(call, r, target_.elf()));
   } else if (r.status != BVB_OK) {
     fail(Failure::Other, describe_failure(call, r, target_.elf()));
   } else {
-    if (r.abi_bad) fail(Failure::Abi, "did not preserve " + abi_names(r.abi_bad));
+    if (r.abi_bad) fail(Failure::Abi, abi_names(r.abi_bad));
     for (const auto &g : r.guard_damage)
       fail(Failure::Guard, std::string("overwrite ") + (g.before ? "before" : "after") + " buffer '" +
                                call.bufs[g.buffer].name + "' at byte offset " + std::to_string(g.offset));
     for (auto &f : compare_call(cc, impl_name(impl), opts_.seed, r.data, expected, host, &r.ret))
       found.push_back(std::move(f));
   }
-  record(cc, impl_name(impl), found);
+  return found;
 }
 
 size_t Checker::flush() {
@@ -411,6 +473,8 @@ size_t Checker::flush() {
       c.cycle_limit = cc.cycle_limit;
       c.args = cc.args;
       c.bufs = cc.bufs;
+      c.junk_seed = cc.junk_seed;
+      c.canary_seed = opts_.adversarial ? canary_seed_of(opts_.seed) : 0;
       calls.push_back(std::move(c));
       slots.push_back({p, impl});
     }
@@ -445,19 +509,51 @@ size_t Checker::flush() {
   }
 
   // Host reference per pending call, then judge each implementation against it.
+  struct Reference {
+    std::vector<std::vector<uint8_t>> expected;
+    HostBuffers host{expected};
+  };
+  std::vector<std::unique_ptr<Reference>> refs;
+  std::vector<std::vector<Failure>> found(calls.size());
   size_t s = 0;
   for (size_t p = 0; p < pending_.size(); ++p) {
     const CheckCall &cc = pending_[p].call;
-    std::vector<std::vector<uint8_t>> expected;
-    for (const auto &b : cc.bufs) expected.push_back(b.data);
-    HostBuffers hb(expected);
-    if (cc.host) cc.host(hb);
+    refs.push_back(std::make_unique<Reference>());
+    Reference &ref = *refs.back();
+    for (const auto &b : cc.bufs) ref.expected.push_back(b.data);
+    if (cc.host) cc.host(ref.host);
     // The host reference is judged too: it must leave its inputs as they were.
-    record(cc, "host", compare_call(cc, "host", opts_.seed, expected, expected, hb, nullptr));
-    for (; s < slots.size() && slots[s].pending == p; ++s) {
-      judge(cc, slots[s].impl, calls[s], results[s], expected, hb);
-      if (pending_[p].observer) pending_[p].observer(slots[s].impl, results[s]);
+    record(cc, "host", compare_call(cc, "host", opts_.seed, ref.expected, ref.expected, ref.host, nullptr));
+    for (; s < slots.size() && slots[s].pending == p; ++s)
+      found[s] = judge(cc, slots[s].impl, calls[s], results[s], ref.expected, ref.host);
+  }
+  // A failure that goes away when the caller-saved registers enter zero instead of junk comes
+  // from a register (or an argument slot) the kernel read without setting it: say so.
+  std::vector<Call> again;
+  std::vector<size_t> which;
+  for (size_t i = 0; i < calls.size(); ++i)
+    if (!found[i].empty() && results[i].crash.empty() && calls[i].junk_seed) {
+      Call c = calls[i];
+      c.junk_seed = 0;
+      c.cycle_limit = results[i].limit;
+      again.push_back(std::move(c));
+      which.push_back(i);
     }
+  if (!again.empty()) {
+    std::vector<CallResult> r = target_.run(again, opts_.jobs);
+    for (size_t k = 0; k < which.size(); ++k) {
+      const size_t i = which[k], p = slots[i].pending;
+      if (!judge(pending_[p].call, slots[i].impl, again[k], r[k], refs[p]->expected, refs[p]->host).empty())
+        continue;
+      for (auto &f : found[i])
+        f.message += "; with zero instead of junk in the caller-saved registers it passes: it reads a "
+                     "register (or an argument) it never set";
+    }
+  }
+  for (s = 0; s < slots.size(); ++s) {
+    const size_t p = slots[s].pending;
+    record(pending_[p].call, impl_name(slots[s].impl), found[s]);
+    if (pending_[p].observer) pending_[p].observer(slots[s].impl, results[s]);
   }
   pending_.clear();
   return failures_.size() - before;

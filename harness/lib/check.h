@@ -78,6 +78,9 @@ struct CheckCall {
   std::function<void(HostBuffers &)> host;  // runs the host C reference on the buffers
   uint32_t cycle_limit = 0;
   double pixels = 0;  // for cycles per pixel
+  // The caller-saved registers' junk on entry (Call::junk_seed); Checker::add draws it from the
+  // case's stream.
+  uint32_t junk_seed = 0;
 
   // Builders: return the buffer's index for Arg::buf().
   int in(std::string name, std::vector<uint8_t> bytes, View v = {});
@@ -118,6 +121,10 @@ struct CheckOptions {
   // Only the call with this CheckCall::case_id ("kernel:N") is queued; every other call is still
   // generated (its family's draws are the same), just not run.
   std::string only_case;
+  // The adversarial call (Checker::add): random poison, junk in the caller-saved registers,
+  // canaries per seed, buffers at the end of SDRAM. Off for the bench, which measures its calls
+  // as the robot places them.
+  bool adversarial = true;
 };
 
 class Checker {
@@ -159,7 +166,11 @@ class Checker {
   // placed at random (place_randomly).
   void place_streaming(CheckCall &call, size_t scratch, Rng &rng);
 
-  // Queues the call on every implementation the firmware has (plus the host reference).
+  // Queues the call on every implementation the firmware has (plus the host reference). Makes
+  // the call adversarial first, with draws from the end of the case's stream (after the
+  // family's, so its inputs stay what they were): output and scratch poison of random bytes,
+  // the junk seed, and in half the calls one SDRAM buffer (an input where there is one) moved
+  // to the end of SDRAM (BVB_PLACE_SDRAM_END), so a read past it faults.
   void add(CheckCall call, Observer observer = {});
   // Runs everything queued; records failures. Returns the number of new failures.
   size_t flush();
@@ -177,8 +188,8 @@ class Checker {
 
  private:
   std::string resolve(const std::string &kernel) const;
-  void judge(const CheckCall &cc, uint32_t impl, const Call &call, const CallResult &r,
-             const std::vector<std::vector<uint8_t>> &expected, const HostBuffers &host);
+  std::vector<Failure> judge(const CheckCall &cc, uint32_t impl, const Call &call, const CallResult &r,
+                             const std::vector<std::vector<uint8_t>> &expected, const HostBuffers &host) const;
   void record(const CheckCall &cc, const std::string &impl, const std::vector<Failure> &found);
 
   const Target &target_;
@@ -227,8 +238,14 @@ std::string format_check_report(const Tallies &tally, const std::vector<Failure>
 // "320 of 640 calls failed (asm 320 of 320, c 0 of 320)". Empty when none failed.
 std::string format_failed_calls(const std::map<std::string, Checker::Tally> &per_impl);
 
-// The byte that output buffers start as: a kernel that skips a pixel leaves it showing.
+// The byte that output buffers start as until Checker::add poisons them with random bytes (and
+// for calls that never go through it: bench, run): a kernel that skips a pixel leaves it showing.
 inline uint8_t poison_byte(size_t i) { return uint8_t(0xC3 + i * 0x29); }
+// The canaries' seed for a check seed: the callee-saved registers' canaries differ per seed.
+uint32_t canary_seed_of(uint32_t seed);
+// For a fault at a data address: which buffer it lies just past the end of (or just before),
+// as "an access N bytes past the end of buffer 'a' ..."; "" when none is near.
+std::string fault_near_buffer(const Call &call, const CallResult &r);
 
 // Renders the first difference between two buffers under a view, with its neighbourhood.
 // Returns "" when they are equal.

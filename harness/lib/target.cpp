@@ -102,12 +102,32 @@ const char *excause_name(uint32_t e) {
   }
 }
 
+bool data_cplb_fault(uint32_t seqstat) {
+  const uint32_t e = seqstat & 0x3f;
+  return e == 0x23 || e == 0x26 || e == 0x27;
+}
+
 std::string abi_names(uint32_t abi) {
-  static const char *names[] = {"R4", "R5", "R6", "R7", "P3", "P4", "P5",
-                                "FP", "SP", "L0", "L1", "L2", "L3"};
+  static const char *names[] = {"R4", "R5", "R6", "R7", "P3", "P4", "P5", "FP", "SP"};
+  std::string kept, circular, loops, counters;
+  for (int i = 0; i < 9; ++i)
+    if (abi >> i & 1) kept += (kept.empty() ? "" : ", ") + std::string(names[i]);
+  for (int i = 0; i < 4; ++i)
+    if (abi >> (9 + i) & 1) circular += (circular.empty() ? "L" : ", L") + std::to_string(i);
+  for (int i = 0; i < 2; ++i)
+    if (abi >> (13 + i) & 1) {
+      loops += (loops.empty() ? "" : " and ") + std::to_string(i);
+      counters += (counters.empty() ? "LC" : " and LC") + std::to_string(i);
+    }
   std::string s;
-  for (int i = 0; i < 13; ++i)
-    if (abi >> i & 1) s += (s.empty() ? "" : ", ") + std::string(names[i]);
+  auto add = [&](const std::string &m) { s += (s.empty() ? "" : "; ") + m; };
+  if (!kept.empty()) add("did not preserve " + kept);
+  if (!circular.empty())
+    add("left " + circular + " non-zero (circular addressing left on breaks every caller)");
+  if (!loops.empty())
+    add("left hardware loop " + loops + " armed (" + counters +
+        " non-zero on return, its loop set up by the kernel: the caller's code would jump back "
+        "at its loop bottom)");
   return s;
 }
 
@@ -128,7 +148,8 @@ std::string describe_failure(const Call &call, const CallResult &r, const std::s
         add("hardware error (HWERRCAUSE " + std::to_string(hw) + ", e.g. an access to unmapped memory) near pc " + at(r.pc));
       else
         add(std::string("fault: ") + excause_name(r.seqstat & 0x3f) + " (EXCAUSE " +
-            hex(r.seqstat & 0x3f) + ") at pc " + at(r.pc));
+            hex(r.seqstat & 0x3f) + ") at pc " + at(r.pc) +
+            (data_cplb_fault(r.seqstat) ? ", address " + hex(r.addr) : ""));
       break;
     }
     case BVB_HANG:
@@ -142,7 +163,7 @@ std::string describe_failure(const Call &call, const CallResult &r, const std::s
       break;
     default: add("unknown status " + std::to_string(r.status));
   }
-  if (r.abi_bad) add("ABI violation: did not preserve " + abi_names(r.abi_bad));
+  if (r.abi_bad) add("ABI violation: " + abi_names(r.abi_bad));
   for (const auto &g : r.guard_damage)
     add("overwrite " + std::string(g.before ? "before" : "after") + " buffer '" +
         call.bufs[g.buffer].name + "' at byte offset " + std::to_string(g.offset));
@@ -161,6 +182,8 @@ uint32_t encode_call(const Call &c, const std::vector<uint32_t> &offsets, uint32
   cmd.cycle_limit = c.cycle_limit ? c.cycle_limit : Target::kDefaultCycleLimit;
   cmd.nargs = uint32_t(c.args.size());
   cmd.nbufs = uint32_t(c.bufs.size());
+  cmd.junk_seed = c.junk_seed;
+  cmd.canary_seed = c.canary_seed;
   for (size_t a = 0; a < c.args.size(); ++a) {
     cmd.args[a] = c.args[a].value;
     if (c.args[a].is_buffer) cmd.argbuf |= 1u << a;

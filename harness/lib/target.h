@@ -53,6 +53,10 @@ struct Call {
   uint32_t cycle_limit = 0;  // 0: Target's default
   std::vector<Arg> args;
   std::vector<Buffer> bufs;
+  // What the caller-saved registers hold on entry (runtime/call.S; 0: zero) and the seed of
+  // the callee-saved registers' canaries (0: the firmware's fixed set).
+  uint32_t junk_seed = 0;
+  uint32_t canary_seed = 0;
 };
 
 struct GuardDamage {
@@ -81,7 +85,11 @@ inline uint8_t guard_byte(size_t i) { return uint8_t(0xA5 ^ (i * 0x3B)); }
 
 // One line saying what went wrong with a call (status, fault, ABI, guards); "" when it is ok().
 std::string describe_failure(const Call &call, const CallResult &r, const std::string &elf = "");
+// What the ABI bits say: "did not preserve R4, P5", "left L3 non-zero (...)", "left hardware
+// loop 1 armed (...)", joined by "; ".
 std::string abi_names(uint32_t abi_bad);
+// A data access the CPLBs refused (miss, protection, multiple hits): fault_addr is the address.
+bool data_cplb_fault(uint32_t seqstat);
 const char *excause_name(uint32_t excause);
 
 struct FirmwareImage {

@@ -22,7 +22,7 @@
 /* 32 MB: eight 4 MB data CPLBs cover it, beside the eight that cover SDRAM (runtime/crt0.S). */
 #define BVB_WINDOW_MAX (32 << 20)
 #define BVB_MAGIC 0x31425642 /* "BVB1" */
-#define BVB_VERSION 1
+#define BVB_VERSION 2
 #define BVB_MAX_ARGS 12
 #define BVB_MAX_BUFS 8
 
@@ -36,7 +36,11 @@ enum bvb_place {
   BVB_PLACE_L1B = 2,     /* L1 data bank B (24 KB usable; the stack takes the rest) */
   BVB_PLACE_SCRATCH = 3, /* L1 scratchpad (4 KB) */
   BVB_PLACE_WINDOW = 4,  /* in place, in the window: no copies (large runs) */
-  BVB_PLACE_COUNT = 5
+  /* SDRAM, its data ending at the end of SDRAM (as close as align and skew allow: less than
+   * align bytes before it), with no guard band after it: nothing is mapped there, so a read or
+   * write past the buffer's end faults (a data CPLB miss) and is blamed on the kernel. */
+  BVB_PLACE_SDRAM_END = 5,
+  BVB_PLACE_COUNT = 6
 };
 
 enum bvb_impl {
@@ -73,7 +77,10 @@ enum bvb_abi_bits {
   BVB_ABI_R4 = 1u << 0, BVB_ABI_R5 = 1u << 1, BVB_ABI_R6 = 1u << 2, BVB_ABI_R7 = 1u << 3,
   BVB_ABI_P3 = 1u << 4, BVB_ABI_P4 = 1u << 5, BVB_ABI_P5 = 1u << 6, BVB_ABI_FP = 1u << 7,
   BVB_ABI_SP = 1u << 8,
-  BVB_ABI_L0 = 1u << 9, BVB_ABI_L1 = 1u << 10, BVB_ABI_L2 = 1u << 11, BVB_ABI_L3 = 1u << 12
+  BVB_ABI_L0 = 1u << 9, BVB_ABI_L1 = 1u << 10, BVB_ABI_L2 = 1u << 11, BVB_ABI_L3 = 1u << 12,
+  /* A hardware loop the kernel set up and left counting (LCn non-zero, LBn no longer the value
+   * the caller put there): the caller's code passing its loop bottom would jump back. */
+  BVB_ABI_LOOP0 = 1u << 13, BVB_ABI_LOOP1 = 1u << 14
 };
 
 struct bvb_buffer {
@@ -105,7 +112,11 @@ struct bvb_command {
   uint32_t fault_pc;    /* RETX (exception) or RETI (watchdog, hardware error) */
   uint32_t fault_addr;  /* DCPLB_FAULT_ADDR */
   uint32_t buf_addr[BVB_MAX_BUFS]; /* where each buffer's data was placed */
-  uint32_t reserved[4];
+  /* written by the host */
+  uint32_t junk_seed;   /* what the caller-saved registers hold on entry (runtime/call.S);
+                           0: zero, arguments aside */
+  uint32_t canary_seed; /* the callee-saved registers' canaries; 0: a fixed set */
+  uint32_t reserved[2];
 };
 
 /* Serving: with BVB_SERVE in flags the firmware reads request, runs its commands, sets served to
