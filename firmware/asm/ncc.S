@@ -1049,7 +1049,54 @@ _ncc_dstart:
  * zero) and TP (each row led by a zero). Returns vt in R0 (also in the context). The loops read
  * one pixel past each row of the template: still inside the frame, since s >= 1. */
 	.align 4
+.Lt_far:
+	jump.l .Lt_gen;      /* the fast path below is beyond a conditional jump's reach */
 _ncc_template:
+	r1 = [p5 + CTX_TSRC];
+	cc = r1 == 0;
+	if cc jump .Lt_far;
+	/* The template's memory DMA copy (only in the banked layout, so r = 5): 121 contiguous
+	 * bytes on a word boundary (D_SET0 + D_TPL and D_SET1 + D_TPL are multiples of 4 from the
+	 * area, which is word-aligned). ST by SAA against zero, four pixels an issue, in the four
+	 * 16-bit lanes of A1:0 (at most 31 * 255 each); then STT and T' in one unrolled pass of 7
+	 * issues per four pixels (ncc_template5.inc). I0, I1 stay word-aligned: SAA's and
+	 * BYTEUNPACK's byte offsets are 0, so each reads the word it names. */
+	i0 = r1;
+	p2 = r1;             /* the SAA pass's words */
+	p0 = r1;             /* the unrolled pass's words */
+	r0 = [p5 + CTX_TF];
+	i1 = r0;             /* word-aligned too */
+	r0 = [p5 + CTX_TP];
+	i2 = r0;
+	p1 = 14;
+	r2 = 0;
+	r3 = 0;
+	a1 = a0 = 0 || r0 = [p2++] || nop;
+	r1 = [p2++];
+	lsetup (.Lt5_s0, .Lt5_s1) lc0 = p1;
+.Lt5_s0:
+	saa (r1:0, r3:2) || r0 = [p2++] || nop;
+.Lt5_s1:
+	saa (r1:0, r3:2) (r) || r1 = [p2++] || nop;
+	saa (r1:0, r3:2) || r0 = [p2++] || nop;  /* word 28; word 30 in */
+	saa (r1:0, r3:2) (r);                    /* word 29 */
+	r0 = r0.b (z);                           /* pixel 120 alone */
+	saa (r1:0, r3:2);
+	r1 = a1.l + a1.h, r0 = a0.l + a0.h;
+	r2 = r0 + r1;
+	r2 = pack (r2.l, r2.l);                  /* (ST, ST) */
+	r7 = [p5 + CTX_N];
+	r1 = 0;
+	a1 = a0 = 0 || r0 = [p0++] || nop;
+#include "ncc_template5.inc"
+	r3 = (a0 += a1);     /* STT */
+	r3 *= r7;
+	r6 = r2.l * r2.l (is);
+	r3 = r3 - r6;
+	[p5 + CTX_VT] = r3;
+	r0 = r3;
+	rts;
+.Lt_gen:
 	r0 = [p5 + CTX_Y];
 	r1 = [p5 + CTX_R];
 	r0 = r0 - r1;
