@@ -3,14 +3,17 @@
  * Cycles (bfbench bench: 32 points on a grid, r = 5 (11x11), s = 8 (289 candidates each), frame 2
  * = frame 1 (uniform noise) moved by (3, -2) plus noise; frames in SDRAM, scratch in L1 bank A).
  * Modelled BF537 cycles (--timing bf537) per call:
- *   160x120: 748,491 = 80.9 per candidate; 320x240: 748,298 = 80.9; 640x480: 748,806 (bound
- *   60.5; the issue's target is 80, 739,840). Before the grouped selection sweep (below) and
- *   the radius-5-first MAC dispatch: 752,531, 752,728, 753,238; before memory DMA: 789,535 =
+ *   160x120: 737,195 = 79.7 per candidate; 320x240: 737,002 = 79.7; 640x480: 737,510 (bound
+ *   60.5; the issue's target is 80, 739,840). Before the template of the memory DMA copy was
+ *   done by SAA and an unrolled pass (_ncc_template, ncc_template5.inc: ~350 cycles a point
+ *   fewer): 748,491, 748,298, 748,806; before the grouped selection sweep (below) and the
+ *   radius-5-first MAC dispatch: 752,531, 752,728, 753,238; before memory DMA: 789,535 =
  *   85.4 and 837,089 = 90.5. The per-cause split that follows was measured before the sweep
- *   change: the sweep now tests 4 pairs in 10 single-load issues (was 3 issues and a
- *   sub-bank collision per pair), so its collisions are gone; the DMA bookkeeping remains.
+ *   and template changes: the sweep now tests 4 pairs in 10 single-load issues (was 3 issues
+ *   and a sub-bank collision per pair), so its collisions are gone; the template saves
+ *   ~350 a point (11,296 in all); the DMA bookkeeping remains.
  *   With memory DMA (below) no point's pixels are read through the data cache, so the count no
- *   longer depends on the frame size. Where the 752,531 go at 160x120 (from the model's
+ *   longer depends on the frame size. Where the 752,531 went at 160x120 (from the model's
  *   per-cause totals, --timing-report, of the bench's run with this code against the one
  *   before memory DMA, which also count the harness's own work: the split is an estimate
  *   where marked ~): ~725,000 issued for the work itself (as before, 78.4 per candidate),
@@ -25,9 +28,9 @@
  *   still goes through the cache (the points and results arrays). With the banked scratch
  *   layout (bvb/ncc.h) the MAC pass, passes 1 and 2 and the copy program make no same-sub-bank
  *   dual access (in one sub-bank, T' against the search area's copies costs a cycle every
- *   other MAC). What is left to reach 80: the sweep's collisions (split each numerator record
- *   over two sub-banks, or load the lanes in different cycles, 2 pairs in 6 issues: ~4,500)
- *   and the DMA bookkeeping (fewer calls: inline the owner look-up and the job's sources).
+ *   other MAC). What is left above the bound, per point (~19.2 cycles a candidate, ~5,550 a
+ *   point): the last column's MACs at 67 a candidate, passes 1 and 2, the DMA bookkeeping
+ *   (fewer calls: inline the owner look-up and the job's sources), the sweep and the score.
  * Memory DMA (r = 5, 5 <= s <= 8, both frames in SDRAM, the scratch where DMA reaches; else the
  *   frames are read in place through the cache as before): a job of two transfers per point
  *   (bvb/dma.h) brings its L x L search area of frame 2 and its w x w template of frame 1 into
@@ -36,8 +39,9 @@
  *   bytes, already in L1, into the spare He, Ho), into the set the next point does not use,
  *   and waited for before the next MAC pass: ~3,500 cycles of DMA under ~18,000 of MACs. The
  *   first point's job is waited for at once, the second's runs during the first's passes.
- * Simulator cycles per call (--timing none): 739,940 at 160x120 (738,970 before the sweep
- *   change; where the extra issues go has not been profiled) (the simulator's untimed DMA
+ * Simulator cycles per call (--timing none): 729,060 at 160x120 (739,940 before the template
+ *   change, 738,970 before the sweep change; where the sweep's extra issues go has not been
+ *   profiled) (the simulator's untimed DMA
  *   is waited for by polling; before memory DMA 725,345 = 78.4 per candidate); C at -O2:
  *   14,228,829 = 1538.6 per candidate.
  * Lower bound: a candidate is 121 multiply-accumulates and the two MAC units do two a cycle, so
@@ -45,7 +49,8 @@
  * candidates, fit in the same cycles). The MAC pass runs at that bound for the candidate pairs
  * (121 cycles per pair) and at 67 cycles for each candidate of the last column: 61.2 cycles per
  * candidate on average. The other 17 go to, per point (r = 5, s = 8): pass 1 ~1650 cycles,
- * pass 2 ~790, template ~610, selection sweep ~570, exact v, score and threshold (isqrt,
+ * pass 2 ~790, template ~610 (~350 fewer on the memory DMA path: 31 SAA issues and 218 unrolled),
+ * selection sweep ~570, exact v, score and threshold (isqrt,
  * divisions) ~620, the copy program ~200, calls and taken branches ~500 (the sweep's ~570
  * before it was grouped: now ~420 with no collisions).
  * Data dependence: the selection's threshold rejects almost every pair of candidates in three
@@ -53,8 +58,8 @@
  * template at many offsets, and each of those costs an exact comparison (~200 cycles): on the
  * Middlebury pairs (RubberWhale, Grove2, Urban2, Dimetrodon, Hydrangea; 48 points, r = 5, s = 8)
  * 256 to 391 cycles per candidate, 4 to 6 times faster than the C reference there.
- * ncc_scoremap (one point, every candidate scored exactly): 166,765 modelled cycles at 160x120
- * (577 per score), 179,722 at 320x240; 164,464 issued, ~400 address-register stalls (one a
+ * ncc_scoremap (one point, every candidate scored exactly): 166,741 modelled cycles at 160x120
+ * (577 per score), 179,698 at 320x240; 164,464 issued, ~400 address-register stalls (one a
  * candidate in _ncc_exactv), no collisions, the rest SDRAM. It reads its one point through the
  * cache: memory DMA would wait ~3,500 cycles for it against ~2,300 of line fills at 160x120
  * (~15,000 at 320x240), so it is not used there.
@@ -1044,12 +1049,61 @@ _ncc_dstart:
 	jump .Lds_out;
 
 /* ------------------------------------------------------------------------------------------- */
-/* Template: ST (ALU) and STT (MAC) in two cycles per pixel (one dual MAC cannot do both: its
- * halves share their two source registers), then T' = N*T - ST into TF (flat, then a
- * zero) and TP (each row led by a zero). Returns vt in R0 (also in the context). The loops read
- * one pixel past each row of the template: still inside the frame, since s >= 1. */
+/* Template: ST and STT, then T' = N*T - ST into TF (flat, then a zero) and TP (each row led by
+ * a zero). Returns vt in R0 (also in the context). From the memory DMA copy (contiguous, r = 5)
+ * about 2 cycles a pixel in all (below); in place (.Lt_gen), ST (ALU) and STT (MAC) in two
+ * cycles per pixel (one dual MAC cannot do both: its halves share their two source registers),
+ * then T' in two more. The in-place loops read one pixel past each row of the template: still
+ * inside the frame, since s >= 1. */
 	.align 4
+.Lt_far:
+	jump.l .Lt_gen;      /* the fast path below is beyond a conditional jump's reach */
 _ncc_template:
+	r1 = [p5 + CTX_TSRC];
+	cc = r1 == 0;
+	if cc jump .Lt_far;
+	/* The template's memory DMA copy (only in the banked layout, so r = 5): 121 contiguous
+	 * bytes on a word boundary (D_SET0 + D_TPL and D_SET1 + D_TPL are multiples of 4 from the
+	 * area, which is word-aligned). ST by SAA against zero, four pixels an issue, in the four
+	 * 16-bit lanes of A1:0 (at most 31 * 255 each); then STT and T' in one unrolled pass of 7
+	 * issues per four pixels (ncc_template5.inc). I0, I1 stay word-aligned: SAA's and
+	 * BYTEUNPACK's byte offsets are 0, so each reads the word it names. */
+	i0 = r1;
+	p2 = r1;             /* the SAA pass's words */
+	p0 = r1;             /* the unrolled pass's words */
+	r0 = [p5 + CTX_TF];
+	i1 = r0;             /* word-aligned too */
+	r0 = [p5 + CTX_TP];
+	i2 = r0;
+	p1 = 14;
+	r2 = 0;
+	r3 = 0;
+	a1 = a0 = 0 || r0 = [p2++] || nop;
+	r1 = [p2++];
+	lsetup (.Lt5_s0, .Lt5_s1) lc0 = p1;
+.Lt5_s0:
+	saa (r1:0, r3:2) || r0 = [p2++] || nop;
+.Lt5_s1:
+	saa (r1:0, r3:2) (r) || r1 = [p2++] || nop;
+	saa (r1:0, r3:2) || r0 = [p2++] || nop;  /* word 28; word 30 in */
+	saa (r1:0, r3:2) (r);                    /* word 29 */
+	r0 = r0.b (z);                           /* pixel 120 alone */
+	saa (r1:0, r3:2);
+	r1 = a1.l + a1.h, r0 = a0.l + a0.h;
+	r2 = r0 + r1;
+	r2 = pack (r2.l, r2.l);                  /* (ST, ST) */
+	r7 = [p5 + CTX_N];
+	r1 = 0;
+	a1 = a0 = 0 || r0 = [p0++] || nop;
+#include "ncc_template5.inc"
+	r3 = (a0 += a1);     /* STT */
+	r3 *= r7;
+	r6 = r2.l * r2.l (is);
+	r3 = r3 - r6;
+	[p5 + CTX_VT] = r3;
+	r0 = r3;
+	rts;
+.Lt_gen:
 	r0 = [p5 + CTX_Y];
 	r1 = [p5 + CTX_R];
 	r0 = r0 - r1;

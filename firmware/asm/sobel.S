@@ -70,10 +70,13 @@
  * leave; rows 0 and h-1 leave from a zeroed row of an output buffer.
  *
  * Measured under the model (bfbench bench, --timing bf537, frames contiguous in SDRAM: strides
- * == width; the simulator's own count, --timing none, after it):
- *   sobel3x3_u8    160x120      90,221 cycles  4.70 per pixel (bound 3.88)   sim    83,077
- *     DMA path,    320x240     329,386         4.29           (bound 3.94)   sim   318,045
- *     scratch L1B  640x480   1,294,771         4.21           (bound 3.97)   sim 1,267,887
+ * == width; the simulator's own count, --timing none, after it). The bound is the larger of
+ * the compute's (above, per interior pixel) and the bus's (1 byte in and 1 out per pixel for
+ * u8, 1 in and 5 out for s16 with mag, at 0.5 byte per core cycle: 4.00 and 12.00 per pixel),
+ * as the bench's bound column states it:
+ *   sobel3x3_u8    160x120      90,221 cycles  4.70 per pixel (bound 4.00, compute 3.88)   sim    83,077
+ *     DMA path,    320x240     329,386         4.29           (bound 4.00, compute 3.94)   sim   318,045
+ *     scratch L1B  640x480   1,294,771         4.21           (bound 4.00, compute 3.97)   sim 1,267,887
  *     (C -O2 from SDRAM: 1,768,035 / 7,123,962 / 28,567,030; 19.6x, 21.6x, 22.1x)
  *     Where the 320x240 cycles go, over the bound's 302,600 (interior pixels x 4): the same
  *     loop in place in L1 took 306,348 in the simulator's count (the 16 cycles per group on
@@ -86,9 +89,9 @@
  *     end weigh twice as much per pixel, at 640x480 half as much.
  *     Before the DMA path (frames read in place from SDRAM through the data cache, scratch in
  *     SDRAM): 224,114 / 833,597 / 3,395,439 (11.67 / 10.85 / 11.05 per pixel).
- *   sobel3x3_s16   160x120     240,235 cycles 12.51 per pixel (bound 4.37)   sim   104,812
- *     DMA path,    320x240     946,422        12.32           (bound 4.43)   sim   385,953
- *     scratch L1B  640x480   3,797,007        12.36           (bound 4.47)   sim 1,543,537
+ *   sobel3x3_s16   160x120     240,235 cycles 12.51 per pixel (bound 12.00, compute 4.37)   sim   104,812
+ *     DMA path,    320x240     946,422        12.32           (bound 12.00, compute 4.43)   sim   385,953
+ *     scratch L1B  640x480   3,797,007        12.36           (bound 12.00, compute 4.47)   sim 1,543,537
  *     (C -O2 from SDRAM: 2,363,110 / 9,390,829 / 37,764,030; 9.8x, 9.9x, 9.9x; the bus's
  *     bound, below, 12.00 per pixel at every size). With the magnitude; the core's
  *     4.5 cycles per pixel are hidden under the bus's 12 (1 byte in and 5 out per pixel), so

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 
@@ -135,6 +136,39 @@ std::vector<std::pair<int, int>> pick_points(int w, int h, int r, int s, int cou
   return pts;
 }
 
+// An offset on the edge of the (2s+1)^2 search window: the last row (dy = s) or column (dx = s)
+// most often, since those are the ones a sweep that stops a step early never visits; the first
+// ones and the corners too.
+std::pair<int, int> edge_offset(int s, Rng &rng) {
+  const int k = rng.uniform(-s, s), kind = rng.uniform(0, 7);
+  switch (kind) {
+    case 0: case 1: return {k, s};
+    case 2: case 3: return {s, k};
+    case 4: return {s, s};
+    case 5: return {-s, k};
+    case 6: return {k, -s};
+    default: return {rng.uniform(0, 1) ? -s : s, rng.uniform(0, 1) ? -s : s};
+  }
+}
+
+// A second offset with the same |dx| + |dy| (a reflection or the transpose), so an exact copy
+// there ties with the first and bvb/ncc.h's order (smaller dy, then smaller dx) picks the winner.
+std::pair<int, int> tied_offset(std::pair<int, int> o, Rng &rng) {
+  switch (rng.uniform(0, 3)) {
+    case 0: return {-o.first, o.second};
+    case 1: return {o.first, -o.second};
+    case 2: return {-o.first, -o.second};
+    default: return {o.second, o.first};
+  }
+}
+
+// Copies frame 1's w x w template around (x, y) into frame 2 centred at (x + dx, y + dy).
+void plant(Frames &fr, int x, int y, int r, std::pair<int, int> o) {
+  for (int j = -r; j <= r; ++j)
+    for (int i = -r; i <= r; ++i)
+      fr.f2[size_t(y + o.second + j) * fr.stride + (x + o.first + i)] = fr.f1[size_t(y + j) * fr.stride + (x + i)];
+}
+
 // Frames at any byte offset, the int16 arrays on halfwords; then L1 or SDRAM.
 void place(Checker &ck, CheckCall &c, Rng &rng) {
   for (auto &b : c.bufs) {
@@ -218,6 +252,55 @@ void check(Checker &ck) {
                     rs_name(r, s).c_str());
       CheckCall c = match_call(fr, pts, r, s, name);
       place(ck, c, rng);
+      ck.add(std::move(c));
+    }
+    // Planted winners: frame 2 is unrelated noise but for an exact copy of each point's template
+    // at an offset on its search window's edge (the last row or column most often), and in one
+    // point in three a second copy tying with it. The points' search areas do not overlap, so
+    // each copy is the unique best (score 1.0) or the tie's winner: a candidate sweep that
+    // skips or shifts a row, a column or a pair of candidates gets the offset wrong. Half the
+    // calls in the robot's layout (frames in SDRAM, scratch in L1: the memory DMA path of r = 5,
+    // 5 <= s <= 8), half placed at random.
+    for (int i = 0; i < (campaign ? 24 : 8); ++i) {
+      const int r = rng.uniform(0, 2) ? 5 : rng.uniform(1, BVB_NCC_MAX_RADIUS);
+      const int s = rng.uniform(0, 5) ? rng.uniform(5, 8) : rng.uniform(1, 10);
+      const int side = 2 * (r + s) + 1, cols = rng.uniform(1, 4), rows = rng.uniform(1, 3);
+      Frames fr;
+      fr.w = cols * side + rng.uniform(0, 5);
+      fr.h = rows * side + rng.uniform(0, 5);
+      fr.stride = pick_stride(fr.w, rng);
+      fr.f1 = make_plane(Pattern::Noise, fr.w, fr.h, fr.stride, rng, real);
+      fr.f2 = make_plane(Pattern::Noise, fr.w, fr.h, fr.stride, rng, real);
+      std::vector<std::pair<int, int>> pts;
+      int ties = 0;
+      for (int j = 0; j < rows; ++j)
+        for (int k = 0; k < cols; ++k) {
+          const int x = r + s + k * side, y = r + s + j * side;
+          const auto o = edge_offset(s, rng);
+          plant(fr, x, y, r, o);
+          if (rng.uniform(0, 2) == 0) {
+            const auto t = tied_offset(o, rng);
+            // only where the two copies do not overlap (else the first is no longer exact)
+            if (std::max(std::abs(t.first - o.first), std::abs(t.second - o.second)) > 2 * r) {
+              plant(fr, x, y, r, t);
+              ++ties;
+            }
+          }
+          pts.push_back({x, y});
+        }
+      char name[160];
+      std::snprintf(name, sizeof name, "%dx%d stride %d %s planted edge winners, %zu points, %d ties", fr.w,
+                    fr.h, fr.stride, rs_name(r, s).c_str(), pts.size(), ties);
+      CheckCall c = match_call(fr, pts, r, s, name);
+      if (i % 2 == 0) {
+        for (auto &b : c.bufs) {
+          b.place = b.name == "scratch" ? BVB_PLACE_L1A : BVB_PLACE_SDRAM;
+          if (b.name == "frame1" || b.name == "frame2") b.skew = uint32_t(rng.uniform(0, 3));
+        }
+        c.case_name += " frames SDRAM";
+      } else {
+        place(ck, c, rng);
+      }
       ck.add(std::move(c));
     }
     // Many points in one call, legal ones mixed with border ones and repeats: the assembly copies
