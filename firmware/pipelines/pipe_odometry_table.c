@@ -10,8 +10,9 @@
 #include "bvb/stream.h"
 
 /* The state update's copies (the frame, SDRAM to SDRAM, and its pyramid, from L1 at 160x120)
- * by memory DMA: each as rows of 4 KB and the rest as one more row, one job, which runs while
- * the core computes the NMS and the selection. The bus moves 2 bytes per SCLK once, where the
+ * by memory DMA into the state's other slot: each as rows of 4 KB and the rest as one more
+ * row, one job, which runs while the core tracks the features (they read the previous slot).
+ * The bus moves 2 bytes per SCLK once, where the
  * core's copy through the write-back data cache reads each line in, fills each destination
  * line on its write miss and writes it back. In the simulator the caches are timing-only; on
  * the chip the destination's lines would be invalidated first (the core read the previous
