@@ -25,6 +25,20 @@
  * level; the rest is the C driver (the flat test and the inverse with its division).
  * Lower bound: 3.5 issues per window pixel and iteration (4 bilinear products: 2 dual-MAC
  * issues, half a vector subtract, 2 products for b: 1 issue), not counting the per-level work.
+ * Modelled (--timing bf537, bfbench bench, frames and scratch in SDRAM): 617,443 at 160x120
+ * (13.1 per window pixel and iteration against the bound's 3.5), 761,874 at 320x240 (16.2),
+ * 823,847 at 640x480 (17.5); the simulator's own count 492,620 / 585,655 / 591,984 (before the
+ * scratch layout below and the driver's bit lengths by halving: 710,633 / 869,867 / 934,317).
+ * Where the rest goes: the separable steps' own issues above (the horizontal pass's per-row
+ * set-up, the solve's frame loads and stores, the template step, the C driver); under the
+ * model the windows' level-0 rows of both frames through the data cache (a line fill per
+ * 32 bytes the first time a window touches them; more at the larger sizes, where the
+ * features spread over more lines), and the template step's dual loads of two Te rows
+ * (one sub-bank). The iteration's dual accesses pair h with the template, h with the
+ * differences and the gradients with the differences: bvb_lk_track_run puts the template
+ * and the differences on one side of a 4 KB sub-bank boundary of the scratch and h and the
+ * gradients on the other whenever the scratch spans one (firmware/c/lk.c), so they do not
+ * collide.
  * Working set: the window rows of two levels' images and under 4 KB of scratch (L1 on hardware). */
 #include "bvb/lk.h"
 
@@ -80,7 +94,7 @@ _bvb_lk_asm_ops:
 #define I_TMPL  -8
 #define I_GRAD  -12
 #define I_H     -16    /* work: wy + 1 rows of h, wx + 1 int16 each */
-#define I_D     -20    /* work, after them: the differences */
+#define I_D     -20    /* the differences: after the template (tmpl + 2 wy (wx + 1) + 4) */
 #define I_STR   -24
 #define I_HX    -28
 #define I_HY    -32
@@ -128,16 +142,20 @@ _bvb_lk_iterate_asm:
 	r3 = r7 << 1;
 	r3 += 2;                 /* wy + 1 */
 	[fp + I_ROWS] = r3;
-	r3 *= r2;
-	r0 = r0 + r3;
-	r0 += 4;                 /* a word of gap: the pipelined first store of the differences */
-	[fp + I_D] = r0;
 	r3 = r7 << 1;
 	r3 += 1;                 /* wy */
 	r2 = r6;
 	r2 += 1;
 	r3 *= r2;
 	[fp + I_NPAIR] = r3;
+	/* the differences after the template (2 wy (wx + 1) bytes) and a word of gap, for the
+	 * pipelined first store: the driver keeps them in the template's sub-bank, away from h
+	 * and the gradients (bvb_lk_track_run's scratch layout) */
+	r0 = [fp + I_TMPL];
+	r2 = r3 << 2;
+	r0 = r0 + r2;
+	r0 += 4;
+	[fp + I_D] = r0;
 	r2 = r6;
 	r2 += -1;
 	[fp + I_INNER] = r2;

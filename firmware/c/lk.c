@@ -39,13 +39,16 @@ void bvb_lk_pyramid_c(const uint8_t *src, int32_t width, int32_t height, int32_t
 
 /* ---- fixed-point helpers ---- */
 
+/* Bit length of v (0 for 0), by halving: five steps where a bit-by-bit loop took up to 32
+ * (the driver takes two per feature and level). */
 static int32_t bitlen(uint32_t v) {
   int32_t n = 0;
-  while (v) {
-    ++n;
-    v >>= 1;
-  }
-  return n;
+  if (v >= 0x10000u) v >>= 16, n += 16;
+  if (v >= 0x100u) v >>= 8, n += 8;
+  if (v >= 0x10u) v >>= 4, n += 4;
+  if (v >= 0x4u) v >>= 2, n += 2;
+  if (v >= 0x2u) v >>= 1, n += 1;
+  return n + (int32_t)v;
 }
 
 /* The Blackfin's SIGNBITS of a 32-bit value. */
@@ -194,6 +197,32 @@ static int32_t setup_solve(const int32_t *pa, int32_t npix, int32_t min_det, int
   return 1;
 }
 
+/* Where the steps' arrays go in the 4096-byte scratch. Two groups: Y, the template (2 n bytes,
+ * n = wxp wy), a free word, 2 n bytes (the assembly iteration's differences, at
+ * tmpl + 2 n + 4); X, the gradients (4 n) and work (the patch's h and Te rows: 2 wy + 5 rows of
+ * 4 hx + 8 bytes and a word). The iteration's dual accesses pair an X array with a Y array
+ * (h with the template, h with the differences, the gradients with the differences), so when
+ * the scratch spans two 4 KB L1 sub-banks (or data-cache sub-banks: address bits 13:12) and
+ * each group fits one side, each goes on its own side and those accesses never collide; else
+ * Y then X. Only speed depends on it: the results do not. */
+static void scratch_layout(void *scratch, int32_t hx, int32_t hy, int16_t **tmpl, int32_t **grad,
+                           int16_t **work) {
+  const uint32_t n = (uint32_t)((2 * hx + 2) * (2 * hy + 1));
+  const uint32_t ysize = 4 * n + 8, xsize = 4 * n + (uint32_t)(2 * (2 * hy + 1) + 5) * (uint32_t)(4 * hx + 8) + 4;
+  const uint32_t lo = (uint32_t)((uintptr_t)scratch & 4095u), b = lo ? 4096u - lo : 0;
+  uint8_t *base = (uint8_t *)scratch;
+  uint32_t y = 0, x = ysize;
+  if (b >= ysize && b + xsize <= BVB_LK_SCRATCH_BYTES) {
+    x = b;
+  } else if (b >= xsize && b + ysize <= BVB_LK_SCRATCH_BYTES) {
+    x = 0;
+    y = b;
+  }
+  *tmpl = (int16_t *)(base + y);
+  *grad = (int32_t *)(base + x);
+  *work = (int16_t *)(base + x + 4 * n);
+}
+
 static int32_t inside(int32_t q7x, int32_t q7y, int32_t hx, int32_t hy, int32_t w, int32_t h, int32_t margin) {
   const int32_t ix = q7x >> 7, iy = q7y >> 7;
   return ix - hx - margin >= 0 && ix + hx + 1 + margin <= w - 1 && iy - hy - margin >= 0 &&
@@ -205,10 +234,11 @@ void bvb_lk_track_run(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_
                       const struct bvb_lk_params *params, const int32_t *in, int32_t *out,
                       void *scratch, const struct bvb_lk_ops *ops) {
   const int32_t levels = params->levels, hx = params->win_w >> 1, hy = params->win_h >> 1;
-  const int32_t wxp = 2 * hx + 2, wy = 2 * hy + 1, npix = (2 * hx + 1) * wy;
-  int16_t *tmpl = (int16_t *)scratch;
-  int32_t *grad = (int32_t *)(tmpl + wxp * wy);
-  int16_t *work = (int16_t *)(grad + wxp * wy);
+  const int32_t wy = 2 * hy + 1, npix = (2 * hx + 1) * wy;
+  int16_t *tmpl;
+  int32_t *grad;
+  int16_t *work;
+  scratch_layout(scratch, hx, hy, &tmpl, &grad, &work);
   const uint8_t *lp[BVB_LK_MAX_LEVELS], *ln[BVB_LK_MAX_LEVELS];
   int32_t lw[BVB_LK_MAX_LEVELS], lh[BVB_LK_MAX_LEVELS], ls[BVB_LK_MAX_LEVELS];
   for (int32_t l = 0; l < levels; ++l) {

@@ -5,6 +5,7 @@
 #include "bvb/lk.h"
 #include "bvb/ncc.h"
 #include "bvb/scanline.h"
+#include "bvb/stream.h"
 
 /* ---- fixed-point helpers ---- */
 
@@ -23,8 +24,24 @@ static const int32_t atan_q24deg[CORDIC_N] = {
     938734,    469367,    234684,    117342,    58671,    29335,    14668,    7334,    3667,    1833,
     917,       458,       229,       115,       57,       29,       14,       7};
 
+/* On the Blackfin a 64-bit division is a libgcc call that loops over 32-bit divisions
+ * (__divdi3: some 1,500 cycles); both helpers take one 32-bit division when the operands fit,
+ * which gives the same quotient. */
+static int32_t fits32(int64_t v) { return v >= -0x7FFFFFFF && v <= 0x7FFFFFFF; }
+
+/* n / d truncated towards zero, as C's int64 division. */
+static int64_t div64(int64_t n, int64_t d) {
+  if (fits32(n) && fits32(d)) return (int32_t)n / (int32_t)d;
+  return n / d;
+}
+
 /* n / d rounded to nearest (halves away from zero), d > 0. */
 static int64_t div_round(int64_t n, int64_t d) {
+  if (fits32(n) && fits32(d)) {
+    /* |n| + d / 2 < 2^32: unsigned 32 bits hold it */
+    const uint32_t m = (uint32_t)(n >= 0 ? n : -n), q = (m + (uint32_t)d / 2) / (uint32_t)d;
+    return n >= 0 ? (int64_t)q : -(int64_t)q;
+  }
   return n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d);
 }
 
@@ -113,10 +130,13 @@ struct odo_state {
   int32_t win_heading;   /* fusion window: the heading and the ticks at its start */
   int32_t win_left, win_right;
   int32_t win_age;
+  int32_t slot;          /* which of the two frame and pyramid slots holds the previous frame */
   int32_t nfeat;
   int32_t feat[2 * BVB_ODO_MAX_FEATURES]; /* Q16 positions in the previous frame */
   /* then: the angle bins' columns (bins int32, made in frame 0), the key profile (bins bytes,
-   * padded to 4), the previous frame (stride x height, padded), its LK pyramid (levels 1..) */
+   * padded to 4), two frame slots (stride x height, padded), two LK pyramid slots (levels
+   * 1..): slot `slot` holds the previous frame and its pyramid, the other one receives this
+   * frame's while the tracker still reads the previous one */
 };
 
 #define ALIGN4(n) (((n) + 3u) & ~3u)
@@ -135,7 +155,7 @@ struct odo_setup {
   int32_t dphi_row;            /* the turn that moves the band's centre row by one bin */
   uint32_t pyr_bytes;
   /* state offsets */
-  uint32_t s_table, s_profile, s_frame, s_pyr, s_total;
+  uint32_t s_table, s_profile, s_frame, s_frame_bytes, s_pyr, s_total;
   /* work offsets */
   uint32_t x_profile, x_bins, x_pscratch, x_result, x_curve, x_pyr, x_points,
       x_nres, x_nscr, x_map, x_pairs, x_d, x_e, x_sort, x_resp, x_cand, x_corners, x_total;
@@ -143,6 +163,7 @@ struct odo_setup {
    * over the same bytes later the Harris stages' (f_hscr .. f_strip) */
   uint32_t f_job, f_lkin, f_lkout, f_lkscr, f_hscr, f_nmsscr, f_save, f_strip, f_pyr, f_total;
   int32_t pyr_fast;            /* this frame's pyramid in fast (f_pyr), else in work (x_pyr) */
+  uint32_t pyr_scr_bytes;      /* the pyramid's stream scratch at f_lkin (0: none) */
   int32_t strip_rows;          /* response rows per strip in fast (f_strip); 0: the whole map in
                                 * work (x_resp) */
 };
@@ -190,10 +211,10 @@ static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_par
     const int64_t num = hh * s->cos18 - R * s->sin18, den = R * s->cos18 + hh * s->sin18; /* Q34 */
     if (den <= 0) return;
     /* row = cy + fy yn in Q8, rounded up to a whole row */
-    const int64_t yq8 = p->cy + num * p->fy / den;
+    const int64_t yq8 = p->cy + div64(num * p->fy, den);
     int64_t row = yq8 >= 0 ? (yq8 + 255) >> 8 : -((-yq8) >> 8);
     /* the horizon: cy - fy tan(tilt) */
-    const int64_t hq8 = p->cy - (int64_t)p->fy * s->sin18 / s->cos18;
+    const int64_t hq8 = p->cy - div64((int64_t)p->fy * s->sin18, s->cos18);
     const int64_t hrow = (hq8 >= 0 ? hq8 >> 8 : -((-hq8 + 255) >> 8)) + 1;
     if (row < hrow) row = hrow;
     if (row < 0) row = 0;
@@ -206,10 +227,10 @@ static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_par
   {
     const int64_t xm_q8 = (int64_t)p->win_x0 * 256 + (int64_t)(p->win_w - 1) * 128;
     const int64_t dx = xm_q8 - p->cx;
-    const int64_t num = dx * dx + ((int64_t)p->win_w * p->win_w - 1) * 65536 / 12; /* Q16 px^2 */
-    const int64_t m2_q16 = (num << 16) / ((int64_t)p->fx * p->fx);
+    const int64_t num = dx * dx + div64(((int64_t)p->win_w * p->win_w - 1) * 65536, 12); /* Q16 px^2 */
+    const int64_t m2_q16 = div64(num << 16, (int64_t)p->fx * p->fx);
     const int64_t yc_q8 = (int64_t)p->band_y0 * 256 + (int64_t)(p->band_rows - 1) * 128;
-    const int64_t yc_q16 = (yc_q8 - p->cy) * 65536 / p->fy;
+    const int64_t yc_q16 = div64((yc_q8 - p->cy) * 65536, p->fy);
     const int64_t f_q16 = (((int64_t)Q16 + m2_q16) * s->cos18 - yc_q16 * s->sin18) >> 18;
     const int64_t g = (int64_t)p->fx * f_q16 >> 16;
     if (g < 256 || g > ((int64_t)1 << 28)) return;
@@ -230,13 +251,13 @@ static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_par
     /* A bin's angle on the band's centre row yc rather than the horizon row: the turn's flow
      * there, in bins, is cos(tilt) (cos(tilt) - yc sin(tilt)) at the image centre. */
     const int64_t yc_q8 = (int64_t)p->band_y0 * 256 + (int64_t)(p->band_rows - 1) * 128;
-    const int64_t yc_q18 = (yc_q8 - p->cy) * 262144 / p->fy;
+    const int64_t yc_q18 = div64((yc_q8 - p->cy) * 262144, p->fy);
     const int64_t g_q18 = ((int64_t)s->cos18 * s->cos18 - yc_q18 * s->sin18 / 262144 * s->cos18) >> 18;
     if (g_q18 < 65536) return;
     s->dphi_row = (int32_t)div_round(dphi * 262144, g_q18);
     s->dphi = (int32_t)dphi;
     s->phi0 = a0;
-    s->bins = (int32_t)((a1 - a0) / dphi) + 1;
+    s->bins = (int32_t)div64(a1 - a0, dphi) + 1;
     s->bins_rho = s->bins - s->shift_range;
     if (s->bins_rho < 1) return;
   }
@@ -246,8 +267,9 @@ static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_par
   s->s_table = sizeof(struct odo_state);
   s->s_profile = s->s_table + 4 * (uint32_t)s->bins;
   s->s_frame = s->s_profile + ALIGN4((uint32_t)s->bins);
-  s->s_pyr = s->s_frame + ALIGN4(S * H);
-  s->s_total = s->s_pyr + s->pyr_bytes;
+  s->s_frame_bytes = ALIGN4(S * H);
+  s->s_pyr = s->s_frame + 2 * s->s_frame_bytes;
+  s->s_total = s->s_pyr + 2 * s->pyr_bytes;
 
   uint32_t o = 0;
   s->x_profile = o, o += ALIGN4(W);
@@ -276,7 +298,16 @@ static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_par
    * the tracker reads it there, and its copy into the state leaves L1 by DMA. */
   s->f_pyr = lk_end;
   s->pyr_fast = lk_end + s->pyr_bytes <= BVB_ODO_FAST_MAX;
-  const uint32_t lk_total = s->pyr_fast ? lk_end + s->pyr_bytes : lk_end;
+  uint32_t lk_total = s->pyr_fast ? lk_end + s->pyr_bytes : lk_end;
+  /* The pyramid's stream (the frame's rows through L1 by DMA, bvb/stream.h) over the
+   * tracker's buffers, which stage 4 fills only after it, up to the pyramid or the end of
+   * fast. */
+  {
+    const uint32_t need = BVB_STREAM_SCRATCH_BYTES(W, 0, 0);
+    const uint32_t end = s->pyr_fast ? s->f_pyr : BVB_ODO_FAST_MAX;
+    s->pyr_scr_bytes = s->f_lkin + need <= end ? need : 0;
+    if (s->pyr_scr_bytes && s->f_lkin + need > lk_total) lk_total = s->f_lkin + need;
+  }
   /* Then, from the job on, over the same bytes (the pyramid is in the state by then): the
    * Harris scratch, the NMS scratch, two saved response rows and a strip of response rows as
    * tall as the rest of BVB_ODO_FAST_MAX allows (160x120: 20 rows), which the NMS reads in L1
@@ -393,9 +424,9 @@ static int32_t refine_shift(const int32_t *res, const uint32_t *curve, int32_t w
   const int32_t t = res[0];
   if (t - 1 < -T || t + 1 > T) return t * 256;
   const int64_t nm = w - iabs(t - 1), n0 = w - iabs(t), np = w - iabs(t + 1);
-  const int64_t fm = ((int64_t)curve[t - 1 + T] << 16) / nm;
-  const int64_t f0 = ((int64_t)curve[t + T] << 16) / n0;
-  const int64_t fp = ((int64_t)curve[t + 1 + T] << 16) / np;
+  const int64_t fm = div64((int64_t)curve[t - 1 + T] << 16, nm);
+  const int64_t f0 = div64((int64_t)curve[t + T] << 16, n0);
+  const int64_t fp = div64((int64_t)curve[t + 1 + T] << 16, np);
   const int64_t den = fit == 2 ? 2 * ((fm > fp ? fm : fp) - f0) : fm - 2 * f0 + fp;
   if (fit == 0 || den <= 0) return t * 256;
   int64_t delta = div_round((fm - fp) * 128, den);
@@ -410,11 +441,13 @@ static int32_t bitlen64(int64_t v) {
   uint32_t w = (uint32_t)(v >> 31);
   if (w) n = 31;
   else w = (uint32_t)v;
-  while (w) {
-    ++n;
-    w >>= 1;
-  }
-  return n;
+  /* the rest by halving, five steps */
+  if (w >= 0x10000u) w >>= 16, n += 16;
+  if (w >= 0x100u) w >>= 8, n += 8;
+  if (w >= 0x10u) w >>= 4, n += 4;
+  if (w >= 0x4u) w >>= 2, n += 2;
+  if (w >= 0x2u) w >>= 1, n += 1;
+  return n + (int32_t)w;
 }
 
 /* A point (Q8 pixels) on the floor, robot frame: F ahead of the axle, L to the left, Q16 inches.
@@ -680,7 +713,13 @@ int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *
   if (!s.ok) return -1;
   struct odo_state *st = (struct odo_state *)state;
   uint8_t *x = (uint8_t *)work, *fx = (uint8_t *)fast;
-  uint8_t *key = state + s.s_profile, *prev = state + s.s_frame, *prev_pyr = state + s.s_pyr;
+  const int32_t first = info->index == 0 || st->version != BVB_ODO_STATE_VERSION;
+  const int32_t slot = first ? 0 : st->slot & 1;
+  uint8_t *key = state + s.s_profile;
+  uint8_t *prev = state + s.s_frame + (uint32_t)slot * s.s_frame_bytes;
+  uint8_t *prev_pyr = state + s.s_pyr + (uint32_t)slot * s.pyr_bytes;
+  uint8_t *next = state + s.s_frame + (uint32_t)(1 - slot) * s.s_frame_bytes;
+  uint8_t *next_pyr = state + s.s_pyr + (uint32_t)(1 - slot) * s.pyr_bytes;
   uint8_t *profile = x + s.x_profile, *pyr = s.pyr_fast ? fx + s.f_pyr : x + s.x_pyr;
   int32_t *table = (int32_t *)(state + s.s_table);
   int32_t *corners = (int32_t *)(x + s.x_corners);
@@ -688,7 +727,6 @@ int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *
   const int32_t w = width, h = height, lk = p->tracker == BVB_ODO_TRACK_LK;
   const int32_t left = info->left_ticks, right = info->right_ticks;
   const int32_t stages = info->stages > 0 ? info->stages : BVB_ODO_STAGES;
-  const int32_t first = info->index == 0 || st->version != BVB_ODO_STATE_VERSION;
   struct odo_frame f;
   int32_t k = 0;
 
@@ -707,26 +745,24 @@ int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *
   if (!first) rotation(ops, p, &s, st, key, cur, left, right, x, &f);
   if (++k >= stages) goto done;
   /* 3: this frame's pyramid */
-  if (lk) ops->lk_pyramid(frame, w, h, stride, p->lk_levels, pyr);
+  if (lk) ops->lk_pyramid(frame, w, h, stride, p->lk_levels, pyr, fx + s.f_lkin, s.pyr_scr_bytes);
   if (++k >= stages) goto done;
+  /* A full run copies this frame and its pyramid into the state's other slot now, by memory
+   * DMA in the assembly build (a stride of whole words), while the tracker computes: it reads
+   * the previous frame's slot, and the copy runs on the bus the tracker's compute leaves
+   * free. It is done before the Harris stages, which use the DMA stream and overwrite the
+   * pyramid in fast. A run stopped early copies nothing (the state stays as it was). */
+  const int32_t full = stages >= BVB_ODO_STAGES, by_dma = full && stride % 4 == 0;
+  if (by_dma)
+    ops->copy(fx + s.f_job, next, frame, (uint32_t)(stride * h), next_pyr, pyr, lk ? s.pyr_bytes : 0);
+  else if (full)
+    copy_state(&s, next, frame, next_pyr, pyr, lk);
   /* 4: the previous frame's features tracked into this one */
   if (!first) f.tracked = track(ops, p, &s, st, prev, prev_pyr, frame, pyr, x, fx, (int32_t *)(x + s.x_pairs));
   if (++k >= stages) goto done;
-  /* A full run copies this frame and its pyramid into the state once the tracker, the last to
-   * read the previous ones, is done: with Harris strips (they overwrite the pyramid in fast)
-   * now, the copy overlapping stage 5, else after the response, overlapping the NMS and the
-   * selection. */
-  const int32_t full = stages >= BVB_ODO_STAGES, early = full && stride % 4 == 0;
-  const int32_t copy_first = full && s.strip_rows;
-  if (copy_first) {
-    if (early)
-      ops->copy(fx + s.f_job, prev, frame, (uint32_t)(stride * h), prev_pyr, pyr, lk ? s.pyr_bytes : 0);
-    else
-      copy_state(&s, prev, frame, prev_pyr, pyr, lk);
-  }
   /* 5: translation and pose */
   if (!first) estimate(p, &s, st, x, &f);
-  if (copy_first && early) ops->copy_wait();
+  if (by_dma) ops->copy_wait();
   if (++k >= stages) goto done;
   /* 6, 7: Harris corners of the floor region, for the next frame */
   int32_t *cand = (int32_t *)(x + s.x_cand), count = 0;
@@ -737,13 +773,12 @@ int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *
                          fx + s.f_hscr);
   }
   if (++k >= stages) goto done;
-  if (early && !copy_first)
-    ops->copy(fx + s.f_job, prev, frame, (uint32_t)(stride * h), prev_pyr, pyr, lk ? s.pyr_bytes : 0);
   if (!s.strip_rows)
     ops->harris_nms((int32_t *)(x + s.x_resp), w, s.hreg, w, p->harris_threshold, cand, &count, fx + s.f_nmsscr);
   f.ncorners = bvb_harris_select_c(cand, count, p->max_features, p->min_distance, corners);
   if (++k >= stages) goto done;
-  /* 8: commit: the pose, the fusion window, the key profile, this frame as the previous one */
+  /* 8: commit: the pose, the fusion window, the key profile, this frame's slot as the previous
+   * one */
   if (first) {
     st->version = BVB_ODO_STATE_VERSION;
     st->frames = 0;
@@ -786,12 +821,7 @@ int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *
     st->feat[2 * i + 1] = (corners[3 * i + 1] + s.floor_y0) * Q16;
   }
   st->nfeat = f.ncorners;
-  if (!copy_first) {
-    if (early)
-      ops->copy_wait();
-    else
-      copy_state(&s, prev, frame, prev_pyr, pyr, lk);
-  }
+  st->slot = 1 - slot;
   ++k;
 
 done:
@@ -811,9 +841,16 @@ done:
   return BVB_PIPE_STOP;
 }
 
+static void pyramid_c(const uint8_t *src, int32_t width, int32_t height, int32_t stride, int32_t levels,
+                      uint8_t *pyr, void *scratch, uint32_t scratch_bytes) {
+  (void)scratch;
+  (void)scratch_bytes;
+  bvb_lk_pyramid_c(src, width, height, stride, levels, pyr);
+}
+
 static const struct bvb_odo_kernels c_kernels = {
     bvb_scanline_profile_u8_c, bvb_scanline_shift_u8_c, bvb_harris_response_c, bvb_harris_nms_c,
-    bvb_lk_pyramid_c,          bvb_lk_track_c,          bvb_ncc_match_c,       bvb_ncc_scoremap_c,
+    pyramid_c,                 bvb_lk_track_c,          bvb_ncc_match_c,       bvb_ncc_scoremap_c,
     copy_both, copy_none};
 
 int32_t bvb_pipe_odometry_c(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,

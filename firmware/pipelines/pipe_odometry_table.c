@@ -7,10 +7,12 @@
 #include "bvb/ncc.h"
 #include "bvb/pipe_odometry.h"
 #include "bvb/scanline.h"
+#include "bvb/stream.h"
 
 /* The state update's copies (the frame, SDRAM to SDRAM, and its pyramid, from L1 at 160x120)
- * by memory DMA: each as rows of 4 KB and the rest as one more row, one job, which runs while
- * the core computes the NMS and the selection. The bus moves 2 bytes per SCLK once, where the
+ * by memory DMA into the state's other slot: each as rows of 4 KB and the rest as one more
+ * row, one job, which runs while the core tracks the features (they read the previous slot).
+ * The bus moves 2 bytes per SCLK once, where the
  * core's copy through the write-back data cache reads each line in, fills each destination
  * line on its write miss and writes it back. In the simulator the caches are timing-only; on
  * the chip the destination's lines would be invalidated first (the core read the previous
@@ -73,9 +75,44 @@ static void dma_copy_wait(void) {
   copy_pending = 0;
 }
 
+/* The pyramid with the frame's rows brought into L1 by the row-band stream (bvb/stream.h):
+ * level 1 band by band (each band an even number of rows: its rows pair as in the whole
+ * frame), the levels above from level 1 (the pyramid is in L1 at 160x120). Reading the frame
+ * through the data cache costs a line fill per 32 bytes; the stream moves it at the bus's
+ * rate. When the stream refuses (no scratch, the frame already in L1, an odd band), the kernel
+ * reads the frame in place. */
+static void pyramid_asm(const uint8_t *src, int32_t width, int32_t height, int32_t stride, int32_t levels,
+                        uint8_t *pyr, void *scratch, uint32_t scratch_bytes) {
+  struct bvb_stream *st = (struct bvb_stream *)scratch;
+  const int32_t s1 = BVB_LK_LEVEL_STRIDE(width >> 1);
+  if (levels < 2 || scratch_bytes < BVB_STREAM_SCRATCH_BYTES((uint32_t)width, 0, 0) ||
+      (BVB_STREAM_BAND_ROWS(width) & 1) != 0) {
+    bvb_lk_pyramid_asm(src, width, height, stride, levels, pyr);
+    return;
+  }
+  st->src[0] = src;
+  st->src_stride[0] = stride;
+  st->src_bytes[0] = width;
+  st->src_bytes[1] = 0;
+  st->dst = 0;
+  st->dst_stride = 0;
+  st->dst_bytes = 0;
+  st->rows = height & ~1;
+  if (bvb_stream_open(st) != 0) {
+    bvb_lk_pyramid_asm(src, width, height, stride, levels, pyr);
+    return;
+  }
+  int32_t n, r = 0;
+  while ((n = bvb_stream_next(st)) > 0) {
+    bvb_lk_pyramid_asm(st->in[0], width, n, width, 2, pyr + (r >> 1) * s1);
+    r += n;
+  }
+  if (levels > 2) bvb_lk_pyramid_asm(pyr, width >> 1, height >> 1, s1, levels - 1, pyr + s1 * (height >> 1));
+}
+
 static const struct bvb_odo_kernels odo_asm = {
     bvb_scanline_profile_u8_asm, bvb_scanline_shift_u8_asm, bvb_harris_response_asm, bvb_harris_nms_asm,
-    bvb_lk_pyramid_asm,          bvb_lk_track_asm,          bvb_ncc_match_asm,       bvb_ncc_scoremap_asm,
+    pyramid_asm,          bvb_lk_track_asm,          bvb_ncc_match_asm,       bvb_ncc_scoremap_asm,
     dma_copy, dma_copy_wait};
 
 int32_t bvb_pipe_odometry_asm(const uint8_t *frame, int32_t width, int32_t height, int32_t stride,

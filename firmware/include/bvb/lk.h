@@ -153,7 +153,9 @@ void bvb_lk_track_asm(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_
  * T on the window (int16, rows of wx + 1, the last column 0), grad the words Ix | Iy << 16 (same
  * layout, the last column 0); work holds the extended template.
  * iterate: the iterations of one level (block BVB_LK_IT_*); returns BVB_LK_TRACKED (converged),
- * BVB_LK_NOT_CONVERGED or BVB_LK_LEFT. */
+ * BVB_LK_NOT_CONVERGED or BVB_LK_LEFT. Its work holds h; the assembly keeps the differences
+ * in the 2 wy (wx + 1) + 8 bytes after the template's end (the driver's scratch layout leaves
+ * them free, in the template's L1 sub-bank). */
 typedef void (*bvb_lk_patch_fn)(const uint8_t *img, int16_t *tmpl, int32_t *grad, int16_t *work,
                                 int32_t *block);
 typedef int32_t (*bvb_lk_iterate_fn)(const uint8_t *img, const int16_t *tmpl, const int32_t *grad,

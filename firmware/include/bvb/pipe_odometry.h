@@ -134,8 +134,9 @@
  *   the bottom; 1 <= max_features <= BVB_ODO_MAX_FEATURES; lk_levels 1..4, lk_win odd 3..15,
  *   lk_max_iter 1..100; ncc_radius 1..5, ncc_search 1..16; tpi 1..65536 ticks per inch,
  *   wheelbase 1/16..256 in, fuse_window >= 1.
- *   Working set with the harness's defaults: state 26,948 bytes at 160x120 (the previous frame
- *   and its pyramid; 104,412 at 320x240), work 48,804 bytes (295,904, where the Harris
+ *   Working set with the harness's defaults: state 52,156 bytes at 160x120 (two slots of a
+ *   frame and its pyramid: the previous one, and this one's, copied in while the tracker reads
+ *   the other, by memory DMA in the assembly build; 206,420 at 320x240), work 48,804 bytes (295,904, where the Harris
  *   response of the floor region is most of it); both in SDRAM; fast 23,792 bytes (13,552 at
  *   320x240: no pyramid, the response map in work). */
 #ifndef BVB_PIPE_ODOMETRY_H
@@ -147,7 +148,7 @@
 #include "bvb/pipeline.h"
 
 #define BVB_ODO_MAX_FEATURES 127
-#define BVB_ODO_STATE_VERSION 0x4F444F31 /* "ODO1" */
+#define BVB_ODO_STATE_VERSION 0x4F444F32 /* "ODO2" */
 
 #define BVB_ODO_TRACK_LK 0
 #define BVB_ODO_TRACK_NCC 1
@@ -156,7 +157,8 @@
  * bins, 2 rotation (shift search, fusion), 3 LK pyramid, 4 tracking, 5 floor motion,
  * translation and pose, 6 Harris response (and the NMS, when the map goes in strips through
  * fast), 7 NMS and selection, 8 commit (the state: pose, key
- * profile, features, this frame and its pyramid). A call stopped early leaves the state as it
+ * profile, features, this frame's slot as the previous one; a full run copies this frame and
+ * its pyramid into the other slot after stage 3). A call stopped early leaves the state as it
  * was (except frame 0's bin table, always the same). */
 #define BVB_ODO_STAGES 8
 
@@ -222,8 +224,10 @@ struct bvb_odo_kernels {
                           int32_t src_stride, int32_t dst_stride, void *scratch);
   int32_t (*harris_nms)(const int32_t *resp, int32_t width, int32_t height, int32_t stride,
                         int32_t threshold, int32_t *cand, int32_t *count, void *scratch);
+  /* bvb_lk_pyramid's levels; scratch (scratch_bytes, 4-byte aligned, in fast) is where the
+   * assembly build streams the frame through L1 (0 bytes: the kernel reads it in place). */
   void (*lk_pyramid)(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
-                     int32_t levels, uint8_t *pyr);
+                     int32_t levels, uint8_t *pyr, void *scratch, uint32_t scratch_bytes);
   void (*lk_track)(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_t *next,
                    const uint8_t *next_pyr, int32_t width, int32_t height, int32_t stride,
                    const struct bvb_lk_params *params, const int32_t *in, int32_t *out, void *scratch);
