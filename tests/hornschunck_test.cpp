@@ -132,7 +132,7 @@ TEST(HornSchunckPrepare, DerivativesOfRampMovedOnePixel) {
   const int w = 41, h = 29;
   const bvb::Image a = ramp(w, h, 3, 2, 10), b = ramp(w, h, 3, 2, 7);
   std::vector<int16_t> coef(BVB_HS_COEF_BYTES(w, h) / 2, int16_t(0x7777));
-  bvb_hs_prepare_c(a.data.data(), b.data.data(), w, h, w, kAlpha2, coef.data());
+  bvb_hs_prepare_c(a.data.data(), b.data.data(), w, h, w, kAlpha2, coef.data(), nullptr);
   const int pitch = BVB_HS_COEF_PITCH(w);
   ASSERT_EQ(pitch, 3 * w + 1);
   for (int y = 0; y < h; ++y) {
@@ -290,7 +290,7 @@ TEST(HornSchunckFlow, ConvenienceFunctionEqualsPrepareAndIterations) {
   const int w = 20, h = 13;
   const bvb::Image a = texture(w, h, 5), b = texture(w, h, 5, -0.6, 0.3);
   std::vector<int16_t> coef(BVB_HS_COEF_BYTES(w, h) / 2);
-  bvb_hs_prepare_c(a.data.data(), b.data.data(), w, h, w, kAlpha2, coef.data());
+  bvb_hs_prepare_c(a.data.data(), b.data.data(), w, h, w, kAlpha2, coef.data(), nullptr);
   std::vector<int16_t> cur(size_t(2) * w * h, 0), next(cur.size());
   for (int n = 0; n <= 5; ++n) {
     const FixedFlow f = run_fixed(a, b, kAlpha2, n);

@@ -8,16 +8,26 @@
  *   coefficients and flow in SDRAM through the data cache, as the bench places them:
  *                    160x120               320x240
  *   hs_iterate     1,192,945  (62.13)    4,667,111  (60.77)    bound 10
- *   hs_prepare     1,169,693  (60.92)    4,635,194  (60.35)    bound 17
+ *   hs_prepare       410,030  (21.36)    1,504,833  (19.59)    bound 17 (bus 16)
  *   hornschunck   13,199,603 (687.5)    52,961,454 (689.6)     bound 118, N = 10
- *   Where the modelled cycles go (the same calls with one charge of the model turned off):
+ *   hs_prepare streams its rows through L1 (the scratch in L1 bank B; STREAMED PATH below):
+ *   640x480 5,804,772 (18.90). Its simulator counts are 370,510 and 1,432,760 against the
+ *   343,133 and 1,339,013 of the same code on data in L1 (below): the 27k / 94k between them
+ *   are the stream's per-band work (bvb_stream_next building and starting each job, 30 bands
+ *   of 4 rows at 160 wide, 120 of 2 at 320: 700 to 900 cycles a band with the band loop's
+ *   set-up), frame row 0 read straight from SDRAM and the last row's transfer; the model adds
+ *   39k / 72k (waiting for band 0 and for the last band's output, the MMR accesses, the rsqrt
+ *   table's line fills). Bus time is 16 c/px (2 bytes in, 6 out at 0.5 byte a cycle), under
+ *   the compute, so the transfers hide; wider bands would halve the per-band cost.
+ *   Before the stream (frames through the data cache): 1,169,693 (60.92) and 4,635,194
+ *   (60.35); where those went (the same calls with one charge of the model turned off):
  *   hs_prepare at 160x120: 343,133 issued (the simulator's own count), 607 address-register
  *   stalls (the first pair and the tail of each row), 1,795 sub-bank collisions (two cached
  *   rows loaded in one issue in passes A and B), 824,158 SDRAM line fills and write-backs
  *   through the cache; hs_iterate: 195,564 issued, no stalls, 107 collisions (first and last
  *   pixels), 997,274 SDRAM; hornschunck: 2,318,656 issued, 607 stalls, 2,912 collisions, 10.88M
  *   SDRAM. So the model's cost is the memory, which streaming row bands into L1 by DMA (MEMORY
- *   below) would hide. The simulator's own counts (data as if in L1):
+ *   below) hides. The simulator's own counts (data as if in L1):
  *                    160x120               320x240               640x480
  *   hs_iterate       195,564  (10.19)      775,045  (10.09)      3,086,004  (10.05)   C ~304 c/px
  *   hs_prepare       343,133  (17.87)    1,339,013  (17.44)      5,289,173  (17.22)   C ~345 c/px
@@ -53,6 +63,15 @@
  *     measured 118.68-120.76.
  *   Each is at least 19x faster than the C (prepare 19.3x, iteration 29.8x, full 28.0x at
  *   160x120).
+ *
+ * STREAMED PATH (bvb_hs_prepare_asm with a scratch in L1 and a frame or the coefficients in
+ *   SDRAM): the row-band stream (bvb/stream.h) brings rows 1..h-1 of both frames into L1 and
+ *   sends coefficient rows 0..h-2 out, band by band, while the band before is computed: output
+ *   row y needs frame rows y and y+1, so each band row is the lower row of its output row and
+ *   the pass-A sums of the row above a band's first live in one of two sum rows of the scratch
+ *   (frame row 0's read straight from SDRAM). Row h-1 is made after the stream, in its last
+ *   output buffer, and leaves by one DMA transfer. Where the stream refuses (the scratch not in
+ *   DMA-reachable L1, every buffer in L1), the direct path below.
  *
  * MEMORY. The kernels work wherever the caller puts the buffers. At the robot's sizes frames,
  *   coefficients and flow live in SDRAM (working set 14 bytes per pixel: 263 KB at 160x120, past
@@ -258,7 +277,20 @@ _bvb_hs_iterate_asm:
 #define HS_TAIL    -16  /* width - 4 * groups */
 #define HS_NMID    -20  /* phase-2 pairs with a pair after them: width / 2 - 1 */
 #define HS_ODD     -24  /* width & 1 */
-#define HS_FRAME   24
+/* The streamed path's (bvb/stream.h) */
+#define HS_ST      -28  /* the stream's state: scratch + 8 width, after the two sum rows */
+#define HS_TOP     -32  /* pass-A data of the row above the next output row */
+#define HS_NXT     -36  /* the sum row that takes the row below a band's last */
+#define HS_CSUM    -40  /* the two sum rows' addresses added (the other = CSUM - one) */
+#define HS_END     -44  /* the band's output rows end */
+#define HS_ALPHA   -48  /* alpha2_q4, clamped (A1 again after each stream call) */
+#define HS_F1      -52  /* the arguments in registers */
+#define HS_F2      -56
+#define HS_DEST    -60  /* where this row's pass A goes */
+#define HS_W       -64  /* width */
+#define HS_XFER    -88  /* the last row's transfer (struct bvb_dma_xfer) */
+#define HS_JOB     -200 /* and its DMA job (BVB_DMA_JOB_BYTES) */
+#define HS_FRAME   212  /* locals at FP-200..-1, the C calls' 12 bytes of arguments below */
 
 /* Pass A: per-row frame sums and differences of one row of both frames, r = I2 + I1 and
  * n = I2 - I1 per column, into the row's coefficient area: per group of 4 columns the words
@@ -604,6 +636,8 @@ _bvb_hs_iterate_asm:
 .Lp2_done\tag:
 .endm
 
+#include "bvb/stream.h"
+
 	.section .l1.text, "ax"
 	.align 4
 	.global _bvb_hs_prepare_asm
@@ -611,9 +645,10 @@ _bvb_hs_iterate_asm:
 _bvb_hs_prepare_asm:
 	[--sp] = (r7:4, p5:3);
 	link HS_FRAME;
-	/* Arguments 4-7 at FP + 8 (RETS, FP) + 28 (saves) + 12. */
-	b1 = r0;                        /* frame 1 row */
-	b2 = r1;                        /* frame 2 row */
+	/* Arguments 4-8 at FP + 8 (RETS, FP) + 28 (saves) + 12. */
+	[fp + HS_F1] = r0;
+	[fp + HS_F2] = r1;
+	[fp + HS_W] = r2;
 	r3 = r2 << 2;
 	[fp + HS_W4] = r3;
 	r4 = r2 << 1;
@@ -632,22 +667,39 @@ _bvb_hs_prepare_asm:
 	r3 = r2 >> 1;
 	r3 += -1;
 	[fp + HS_NMID] = r3;
-	r3 = [fp + 52];
-	b3 = r3;                        /* stride */
 	r3 = [fp + 56];                 /* alpha2_q4, clamped to 1024..1048576 */
 	r4 = 1024;
 	r3 = max (r3, r4);
 	r4.l = 0;
 	r4.h = 0x10;
 	r3 = min (r3, r4);
-	a1 = r3;
-	p3 = [fp + 60];
-	b0 = p3;                        /* coefficient row */
+	[fp + HS_ALPHA] = r3;
 	p4.l = .Lhs_counts - 36;
 	p4.h = .Lhs_counts - 36;
 	p5.l = _bvb_hs_rsqrt_table - 512;
 	p5.h = _bvb_hs_rsqrt_table - 512;
+	r0 = [fp + 64];                 /* scratch */
+	cc = r0 == 0;
+	if cc jump .Lpr_direct;
+	call .Lps_stream;
+	cc = r0 == 0;
+	if !cc jump .Lpr_direct;
+	jump.l .Lpr_ret;
+.Lpr_direct:
+	/* The frames and coefficients where they are. */
+	r0 = [fp + HS_F1];
+	b1 = r0;                        /* frame 1 row */
+	r0 = [fp + HS_F2];
+	b2 = r0;                        /* frame 2 row */
+	r3 = [fp + 52];
+	b3 = r3;                        /* stride */
+	r3 = [fp + HS_ALPHA];
+	a1 = r3;
+	p3 = [fp + 60];
+	b0 = p3;                        /* coefficient row */
 	p0 = p3;
+	r0 = b1;
+	r1 = b2;
 	HS_PASS_A 0
 	r0 = [fp + 48];                 /* height */
 	r0 += -1;
@@ -696,8 +748,199 @@ _bvb_hs_prepare_asm:
 	HS_PASS_B 2
 	p3 = b0;
 	HS_PHASE2 2
+.Lpr_ret:
 	unlink;
 	(r7:4, p5:3) = [sp++];
+	rts;
+
+/* The streamed path: R0 = 0 when done, else the stream refused and nothing was written (the
+ * caller takes the direct path). Called from the kernel's frame (FP), RETS saved here.
+ * The stream carries rows 1..h-1 of both frames in and coefficient rows 0..h-2 out: output row
+ * y needs frame rows y and y+1, and the band with frame row y+1 is the one that makes it. Pass
+ * A of each band row (frame row y+1) goes to the next output row's area in the band, or, for
+ * the band's last row, to the sum row the next band starts from (TOP); pass B of output row y
+ * takes TOP and that. The two sum rows alternate, so a band of one row reads one and fills the
+ * other. Row h-1 (the row below it is itself) is made in the last band's output buffer once
+ * the stream has sent it, and leaves by one DMA transfer. */
+.Lps_stream:
+	[--sp] = rets;
+	/* the sum rows at the scratch's start, the stream's state after them */
+	r0 = [fp + 64];
+	r1 = [fp + HS_W4];
+	r2 = r0 + r1;
+	[fp + HS_NXT] = r2;
+	r2 = r2 + r0;
+	[fp + HS_CSUM] = r2;
+	[fp + HS_TOP] = r0;
+	r1 = r1 << 1;
+	r0 = r0 + r1;
+	[fp + HS_ST] = r0;
+	p0 = r0;
+	r2 = [fp + 52];                 /* stride */
+	r1 = [fp + HS_F1];
+	r1 = r1 + r2;
+	[p0 + ST_SRC0] = r1;
+	r1 = [fp + HS_F2];
+	r1 = r1 + r2;
+	[p0 + ST_SRC1] = r1;
+	[p0 + ST_SS0] = r2;
+	[p0 + ST_SS1] = r2;
+	r1 = [fp + HS_W];
+	[p0 + ST_SB0] = r1;
+	[p0 + ST_SB1] = r1;
+	r1 = [fp + 60];
+	[p0 + ST_DST] = r1;
+	r1 = [fp + HS_PITCH];
+	[p0 + ST_DS] = r1;
+	[p0 + ST_DB] = r1;
+	r1 = [fp + 48];
+	r1 += -1;
+	[p0 + ST_ROWS] = r1;
+	call _bvb_stream_open;
+	cc = r0 == 0;
+	if cc jump .Lps_open;
+	jump.l .Lps_ret;
+.Lps_open:
+	/* Pass A of frame row 0, straight from the frames, into the first sum row. */
+	r0 = [fp + HS_F1];
+	r1 = [fp + HS_F2];
+	p0 = [fp + HS_TOP];
+	HS_PASS_A 3
+.Lps_band:
+	r0 = [fp + HS_ST];
+	call _bvb_stream_next;
+	cc = r0 == 0;
+	if !cc jump .Lps_more;
+	jump.l .Lps_last;
+.Lps_more:
+	lc1 = r0;
+	p0 = [fp + HS_ST];
+	r1 = [p0 + ST_IN0];
+	b1 = r1;
+	r1 = [p0 + ST_IN1];
+	b2 = r1;
+	r1 = [p0 + ST_OUT];
+	b0 = r1;
+	r2 = [fp + HS_PITCH];
+	r0 *= r2;
+	r0 = r0 + r1;
+	[fp + HS_END] = r0;
+	r1 = [fp + HS_ALPHA];
+	a1 = r1;
+	lsetup (.Lps_row, .Lps_row_end) lc1;
+.Lps_row:
+	/* Pass A of the band row (frame row y + 1): into output row y + 1's area, or the sum row */
+	r0 = b0;
+	r1 = [fp + HS_PITCH];
+	r0 = r0 + r1;
+	r1 = [fp + HS_END];
+	cc = r0 == r1;
+	r1 = [fp + HS_NXT];
+	if cc r0 = r1;
+	[fp + HS_DEST] = r0;
+	p0 = r0;
+	r0 = b1;
+	r1 = b2;
+	HS_PASS_A 4
+	/* Pass B: TOP and DEST into output row y (C, then q in its gt row); DEST is the next TOP */
+	p3 = b0;
+	r0 = [fp + HS_TOP];
+	i2 = r0;
+	r0 = [fp + HS_DEST];
+	i3 = r0;
+	[fp + HS_TOP] = r0;
+	p0 = p3;
+	r0 = p3;
+	r1 = [fp + HS_W4];
+	r0 = r0 + r1;
+	p1 = r0;
+	HS_PASS_B 3
+	p3 = b0;
+	HS_PHASE2 3
+	r0 = b0;
+	r1 = [fp + HS_PITCH];
+	r0 = r0 + r1;
+	b0 = r0;
+	r1 = [fp + HS_W];
+	r0 = b1;
+	r0 = r0 + r1;
+	b1 = r0;
+	r0 = b2;
+	r0 = r0 + r1;
+.Lps_row_end:
+	b2 = r0;
+	/* The sum row just filled starts the next band; the other takes its last row's. */
+	r0 = [fp + HS_CSUM];
+	r1 = [fp + HS_TOP];
+	r0 = r0 - r1;
+	[fp + HS_NXT] = r0;
+	jump.l .Lps_band;
+.Lps_last:
+	/* Row h-1: pass B of TOP with itself, into the last band's output buffer (sent). */
+	p0 = [fp + HS_ST];
+	p3 = [p0 + ST_OUT];
+	r0 = [fp + HS_TOP];
+	i2 = r0;
+	i3 = r0;
+	p0 = p3;
+	r0 = p3;
+	r1 = [fp + HS_W4];
+	r0 = r0 + r1;
+	p1 = r0;
+	HS_PASS_B 4
+	r1 = [fp + HS_ALPHA];
+	a1 = r1;
+	p0 = [fp + HS_ST];
+	p3 = [p0 + ST_OUT];
+	HS_PHASE2 4
+	/* ... and out to coefficient row h-1 */
+	p0 = [fp + HS_ST];
+	r0 = [p0 + ST_OUT];
+	[fp + HS_XFER + DMAX_SRC] = r0;
+	r1 = [fp + HS_PITCH];
+	[fp + HS_XFER + DMAX_SS] = r1;
+	[fp + HS_XFER + DMAX_DS] = r1;
+	[fp + HS_XFER + DMAX_W] = r1;
+	r2 = [fp + 48];
+	r2 += -1;
+	r2 *= r1;
+	r0 = [fp + 60];
+	r0 = r0 + r2;
+	[fp + HS_XFER + DMAX_DST] = r0;
+	r0 = 1;
+	[fp + HS_XFER + DMAX_ROWS] = r0;
+	r0 = fp;
+	r1 = HS_JOB (x);
+	r0 = r0 + r1;
+	r1 = 0;
+	r2 = fp;
+	r3 = HS_XFER (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	cc = r0 == 0;
+	if !cc jump .Lps_copy;
+	r0 = fp;
+	r1 = HS_JOB (x);
+	r0 = r0 + r1;
+	r1 = 1;
+	call _bvb_dma_start;
+	call _bvb_dma_wait;
+	r0 = 0;
+	jump .Lps_ret;
+.Lps_copy:
+	/* what DMA refuses (none should: both blocks are where the stream's were), by the core */
+	p0 = [fp + HS_XFER + DMAX_SRC];
+	p1 = [fp + HS_XFER + DMAX_DST];
+	p2 = [fp + HS_PITCH];
+	p2 = p2 >> 2;
+	lsetup (.Lps_cp, .Lps_cp_end) lc0 = p2;
+.Lps_cp:
+	r0 = [p0++];
+.Lps_cp_end:
+	[p1++] = r0;
+	r0 = 0;
+.Lps_ret:
+	rets = [sp++];
 	rts;
 	.size _bvb_hs_prepare_asm, . - _bvb_hs_prepare_asm
 
@@ -713,7 +956,7 @@ _bvb_hs_prepare_asm:
 #define HS_NEXT_STRIDE -20
 #define HS_I1         -24
 #define HS_I2         -28
-#define HS_DRV_FRAME  56             /* locals at FP-28..-1, outgoing arguments at SP + 12..27 */
+#define HS_DRV_FRAME  60             /* locals at FP-28..-1, outgoing arguments at SP + 12..31 */
 
 	.section .l1.text, "ax"
 	.align 4
@@ -779,7 +1022,9 @@ _bvb_hornschunck_asm:
 	[i0++] = r2;
 .Lhs_zrow_end:
 	i0 += m0;
-	/* prepare(i1, i2, width, height, stride, alpha2_q4, coef) */
+	/* prepare(i1, i2, width, height, stride, alpha2_q4, coef, no stream scratch) */
+	r0 = 0;
+	[sp + 28] = r0;
 	r0 = [fp + 52];
 	[sp + 16] = r0;
 	r0 = [fp + 56];

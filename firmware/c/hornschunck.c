@@ -127,7 +127,8 @@ void bvb_hs_coefficients_c(int32_t gx, int32_t gy, int32_t gt, int32_t alpha2_q4
 }
 
 void bvb_hs_prepare_c(const uint8_t *i1, const uint8_t *i2, int32_t width, int32_t height,
-                      int32_t stride, int32_t alpha2_q4, int16_t *coef) {
+                      int32_t stride, int32_t alpha2_q4, int16_t *coef, void *scratch) {
+  (void)scratch; /* the assembly's band buffers */
   const int32_t pitch = BVB_HS_COEF_PITCH(width);
   for (int32_t y = 0; y < height; ++y) {
     const int32_t y1 = y + 1 < height ? y + 1 : height - 1;
@@ -209,7 +210,7 @@ void bvb_hornschunck_c(const uint8_t *i1, const uint8_t *i2, int32_t width, int3
     int16_t *row = (int16_t *)((uint8_t *)cur + y * cur_stride);
     for (int32_t x = 0; x < 2 * width; ++x) row[x] = 0;
   }
-  bvb_hs_prepare_c(i1, i2, width, height, stride, alpha2_q4, coef);
+  bvb_hs_prepare_c(i1, i2, width, height, stride, alpha2_q4, coef, 0);
   for (int32_t n = 0; n < iterations; ++n) {
     int16_t *next = cur == tmp ? uv_out : tmp;
     const int32_t next_stride = cur == tmp ? out_stride : tmp_stride;

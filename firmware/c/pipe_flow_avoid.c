@@ -141,7 +141,8 @@ int32_t bvb_pipe_flow_avoid_run(const struct bvb_flow_avoid_kernels *k, const ui
      * constancy Horn-Schunck rests on: the previous band is brought to the current one's level.
      * Its slot is the next frame's current slot, so scaling it in place costs nothing later. */
     if (p->light_gain) apply_gain(prev, ws * rs, p->black, gain_q12(level, prev_level));
-    k->hs_prepare(prev, cur, ws, rs, ws, p->alpha2_q4, coef);
+    /* The band and the coefficients are in L1 here: nothing to stream (no scratch). */
+    k->hs_prepare(prev, cur, ws, rs, ws, p->alpha2_q4, coef, 0);
     if (++stage >= limit) goto stopped;
     int32_t *z = (int32_t *)flow_a;
     for (int32_t i = 0; i < ws * rs; ++i) z[i] = 0;

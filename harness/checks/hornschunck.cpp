@@ -195,7 +195,7 @@ std::vector<int16_t> make_coef(int w, int h, Rng &rng, Checker &ck, std::string 
     // Any pair kind; a real frame's only when the frames are there (the name says which).
     const int kinds = int(PairKind::Count) - (ck.have_frames() ? 0 : 1);
     FramePair p = make_pair(PairKind(rng.uniform(0, kinds - 1)), w, h, stride, rng, &ck);
-    bvb_hs_prepare_c(p.f1.data(), p.f2.data(), w, h, stride, pick_alpha2(rng), coef.data());
+    bvb_hs_prepare_c(p.f1.data(), p.f2.data(), w, h, stride, pick_alpha2(rng), coef.data(), nullptr);
     *name = "coef " + p.name;
   }
   return coef;
@@ -240,9 +240,10 @@ CheckCall prepare_call(int w, int h, int stride, const FramePair &p, int32_t alp
   int i1 = c.in("i1", p.f1, fv);
   int i2 = c.in("i2", p.f2, fv);
   int ic = c.out("coef", BVB_HS_COEF_BYTES(w, h), cv);
-  c.buf(i1).buf(i2).word(w).word(h).word(stride).word(alpha2).buf(ic);
+  int is = c.scratch("scratch", BVB_HS_PREPARE_SCRATCH_BYTES(w));
+  c.buf(i1).buf(i2).word(w).word(h).word(stride).word(alpha2).buf(ic).buf(is);
   c.host = [=](HostBuffers &m) {
-    bvb_hs_prepare_c(m.u8(i1), m.u8(i2), w, h, stride, alpha2, m.s16(ic));
+    bvb_hs_prepare_c(m.u8(i1), m.u8(i2), w, h, stride, alpha2, m.s16(ic), m.u8(is));
   };
   return c;
 }
@@ -290,6 +291,15 @@ void place(Checker &ck, CheckCall &c, Rng &rng) {
   ck.place_randomly(c);
 }
 
+// hs_prepare: half the calls as the robot runs it (frames and coefficients in SDRAM, the row
+// bands through the scratch in L1), half placed at random (the direct path wherever the stream
+// refuses: a scratch in SDRAM or the scratchpad, everything in L1).
+constexpr int kPrepareScratch = 3;
+void place_prepare(Checker &ck, CheckCall &c, Rng &rng) {
+  for (auto &b : c.bufs) b.skew = b.role == Role::In && b.view.elem == 1 ? uint32_t(rng.uniform(0, 3)) : 0;
+  ck.place_streaming(c, kPrepareScratch, rng);
+}
+
 int flow_stride(int w, Rng &rng) { return pick_stride(4 * w, rng, 4); }
 
 void check(Checker &ck) {
@@ -318,9 +328,28 @@ void check(Checker &ck) {
         CheckCall c = prepare_call(s.w, s.h, stride, p, a2,
                                    size_name(s.w, s.h) + " stride " + std::to_string(stride) + " " + p.name +
                                        " alpha2_q4 " + std::to_string(a2));
-        place(ck, c, rng);
+        place_prepare(ck, c, rng);
         ck.add(std::move(c));
       }
+    // The streamed path's band shapes (bvb/stream.h: BVB_STREAM_BAND_ROWS of 8 bytes a pixel,
+    // the stream carrying rows 1..h-1): one band; full bands and a last band of one row (16,
+    // 15, 2 rows a band); bands of 3 and of 1 row (width 385 and up); odd widths, whose rows
+    // start misaligned in L1. Always streamed: the scratch in L1, the rest in SDRAM.
+    static const Size bands[] = {{2, 2},  {3, 2},  {2, 3},  {5, 4},   {48, 18}, {49, 17},
+                                 {2, 40}, {3, 34}, {200, 7}, {257, 6}, {385, 4}, {400, 3},
+                                 {640, 2}};
+    for (Size s : bands) {
+      const int k = rng.uniform(0, int(PairKind::Count) - 2);  // not RealWarp: always runs
+      const int stride = pick_stride(s.w, rng);
+      FramePair p = make_pair(PairKind(k), s.w, s.h, stride, rng, &ck);
+      const int32_t a2 = pick_alpha2(rng);
+      CheckCall c = prepare_call(s.w, s.h, stride, p, a2,
+                                 size_name(s.w, s.h) + " stride " + std::to_string(stride) + " " + p.name +
+                                     " alpha2_q4 " + std::to_string(a2) + " bands");
+      for (auto &b : c.bufs) b.skew = b.role == Role::In ? uint32_t(rng.uniform(0, 3)) : 0;
+      c.bufs[kPrepareScratch].place = BVB_PLACE_L1B;
+      ck.add(std::move(c));
+    }
   }
   {
     for (Size s : small)
@@ -360,10 +389,14 @@ void check(Checker &ck) {
 CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
   // The integer texture warped: the same bytes, and so the same cycles, on every host.
   FramePair p = make_pair(PairKind::Warp, w, h, w, rng, nullptr);
-  if (kernel == "hs_prepare") return prepare_call(w, h, w, p, 1024, size_name(w, h));
+  if (kernel == "hs_prepare") {
+    CheckCall c = prepare_call(w, h, w, p, 1024, size_name(w, h));
+    c.bufs[kPrepareScratch].place = BVB_PLACE_L1B;  // frames and coefficients in SDRAM
+    return c;
+  }
   if (kernel == "hs_iterate") {
     std::vector<int16_t> coef(BVB_HS_COEF_BYTES(w, h) / 2);
-    bvb_hs_prepare_c(p.f1.data(), p.f2.data(), w, h, w, 1024, coef.data());
+    bvb_hs_prepare_c(p.f1.data(), p.f2.data(), w, h, w, 1024, coef.data(), nullptr);
     std::vector<int16_t> uv(size_t(2) * w * h);
     for (auto &v : uv) v = int16_t(rng.uniform(-1024, 1024));
     return iterate_call(w, h, coef, uv, 4 * w, 4 * w, size_name(w, h));
@@ -379,6 +412,8 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
 //   prepare 17 = 1 (per-row sums: 4 stores per 4 columns) + 2 (column sums: 8 ALU per 4
 //     columns) + 14 (coefficients: 10 ALU/MAC + 4 pointer moves per pixel);
 //   hornschunck = 1 (zeroing the start flow: a store per pixel) + prepare + 10 per iteration.
+// prepare's bus bound with the frames and coefficients in SDRAM is lower: 2 bytes in and 6 out
+// per pixel at 0.5 byte per core cycle (bvb/dma.h) is 16.
 double lower_bound(const std::string &kernel, int w, int h) {
   const double px = double(w) * h;
   if (kernel == "hs_iterate") return 10 * px;

@@ -83,7 +83,9 @@
  *   (3.5 KB at 160, 14 KB at 640; twice that double-buffered). Doing all N iterations in one
  *   pass down the frame (iteration n works 1 row behind iteration n-1) needs about
  *   18 x width x N bytes: 29 KB at 160x120 with N = 10, which fits L1 and leaves only the frames
- *   and the final flow in SDRAM.
+ *   and the final flow in SDRAM. bvb_hs_prepare_asm streams its rows so (the frames' rows in,
+ *   the coefficient rows out, through BVB_HS_PREPARE_SCRATCH_BYTES of L1); the iterations do not
+ *   yet.
  *
  * ASSEMBLY PLAN (BF537; one 32-bit ALU/MAC instruction per cycle plus two loads or one load and
  *   one store in parallel; counts are issue slots per pixel, loads ride in the parallel slots).
@@ -124,6 +126,8 @@
 
 #include <stdint.h>
 
+#include "bvb/stream.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -144,6 +148,13 @@ extern "C" {
 #define BVB_HS_COEF_BYTES(w, h) (2 * BVB_HS_COEF_PITCH(w) * (h))
 #define BVB_HS_SCRATCH_BYTES(w, h) (BVB_HS_COEF_BYTES(w, h) + 4 * (w) * (h))
 
+/* The L1 scratch of bvb_hs_prepare_asm's streamed path: the row-band stream (bvb/stream.h) of
+ * rows 1..h-1 of both frames in and coefficient rows 0..h-2 out, and two rows of per-row sums
+ * (4 bytes a pixel: the pass-A data of the row above a band's first row, and of the row below
+ * its last). 11.6 KB at 160 wide (bands of 4 rows), 12.9 KB at 320 (2), 15.4 KB at 640 (1). */
+#define BVB_HS_PREPARE_SCRATCH_BYTES(w)                                                      \
+  (BVB_STREAM_SCRATCH_BYTES((w), (w), 2 * BVB_HS_COEF_PITCH(w)) + 8 * (w))
+
 /* rsqrt mantissas used by prepare (1536 bytes; the assembly reads the same table). */
 extern const int16_t bvb_hs_rsqrt_table[BVB_HS_RSQRT_ENTRIES];
 
@@ -151,11 +162,14 @@ extern const int16_t bvb_hs_rsqrt_table[BVB_HS_RSQRT_ENTRIES];
  * (|.| <= 1020) to out[0] = gx' (Q15), out[1] = gy' (Q15), out[2] = gt' (Q10). */
 void bvb_hs_coefficients_c(int32_t gx, int32_t gy, int32_t gt, int32_t alpha2_q4, int16_t *out);
 
-/* Derivatives and coefficients for the frame pair, once per frame. */
+/* Derivatives and coefficients for the frame pair, once per frame. scratch:
+ * BVB_HS_PREPARE_SCRATCH_BYTES(width) bytes, 4-byte aligned, or NULL: with a frame or the
+ * coefficients in SDRAM and the scratch in L1 the assembly streams row bands through it
+ * (bvb/stream.h); otherwise, and in the C reference, it is not used. */
 void bvb_hs_prepare_c(const uint8_t *i1, const uint8_t *i2, int32_t width, int32_t height,
-                      int32_t stride, int32_t alpha2_q4, int16_t *coef);
+                      int32_t stride, int32_t alpha2_q4, int16_t *coef, void *scratch);
 void bvb_hs_prepare_asm(const uint8_t *i1, const uint8_t *i2, int32_t width, int32_t height,
-                        int32_t stride, int32_t alpha2_q4, int16_t *coef);
+                        int32_t stride, int32_t alpha2_q4, int16_t *coef, void *scratch);
 
 /* One Jacobi iteration uv_in -> uv_out; the caller ping-pongs the two buffers. */
 void bvb_hs_iterate_c(const int16_t *coef, const int16_t *uv_in, int32_t in_stride,
