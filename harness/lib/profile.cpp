@@ -312,7 +312,9 @@ Profile build_profile(const ProfileData &data, const std::vector<std::pair<uint3
     if (!lp.iterations || !lp.cycles) continue;
     lp.issue_bound = double(issued) / double(lp.iterations);
     if (const Disassembly *d = find_dis(lp.start))
-      lp.where = d->file.empty() ? d->function : d->file + ":" + std::to_string(d->line);
+      lp.where = (d->file.empty() ? d->function : d->file + ":" + std::to_string(d->line)) +
+                 // A macro's loops share its invocation's line: the address tells them apart.
+                 " @" + hex32(lp.start);
     p.loops.push_back(std::move(lp));
   }
   std::sort(p.loops.begin(), p.loops.end(), [](const auto &a, const auto &b) { return a.cycles > b.cycles; });
