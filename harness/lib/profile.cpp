@@ -369,8 +369,8 @@ Profile run_profile(const Target &target, const ProfileOptions &opts) {
   }
   if (!seen) throw sim::SetupError("the profiled call did not run");
   p.overhead = t.null_call_cycles();
-  ProfileData data = parse_profile(std::string(reinterpret_cast<const char *>(read_file(file).data()),
-                                               read_file(file).size()));
+  const std::vector<uint8_t> raw = read_file(file);
+  ProfileData data = parse_profile(std::string(raw.begin(), raw.end()));
   // The run's windows are the empty call (the overhead) and then the profiled call.
   if (data.windows.size() != 2)
     throw sim::SetupError("the profile has " + std::to_string(data.windows.size()) +
