@@ -13,6 +13,9 @@ set(BVB_FUZZ_SECONDS 60 CACHE STRING "How long each fuzz test runs (-max_total_t
 set(BVB_FUZZ_LONG_RUNS 1000000 CACHE STRING "Inputs per target of the opt-in fuzz-long tests (-runs)")
 
 option(BVB_FUZZ_TESTS "Build the fuzz targets with clang and run them in the tests" ON)
+# The sub-build is one step of the main build, whose other steps keep running beside it: left to
+# itself its ninja would start cores + 2 jobs on top of the main build's -j.
+set(BVB_FUZZ_BUILD_JOBS 2 CACHE STRING "Parallel jobs of the fuzz sub-build")
 
 find_program(BVB_CLANGXX NAMES clang++ clang++-14)
 find_program(BVB_CLANG NAMES clang clang-14)
@@ -43,7 +46,7 @@ if(_bvb_fuzz_missing STREQUAL "")
                -DCMAKE_C_COMPILER_LAUNCHER=${CMAKE_C_COMPILER_LAUNCHER}
                -DCMAKE_CXX_COMPILER_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER}
                -DBVB_FRAMES_REAL=${BVB_FRAMES_REAL}
-    BUILD_COMMAND ${CMAKE_COMMAND} --build . --target bvb_fuzzers
+    BUILD_COMMAND ${CMAKE_COMMAND} --build . --target bvb_fuzzers -j ${BVB_FUZZ_BUILD_JOBS}
     INSTALL_COMMAND ""
     BUILD_ALWAYS ON)
 else()

@@ -10,6 +10,7 @@
 #include "io.h"
 #include "patterns.h"
 #include "robot_view.h"
+#include "scene/bench_scene.h"
 #include "formats.h"
 
 namespace bvb {
@@ -170,7 +171,7 @@ void check(Checker &ck) {
 }
 
 CheckCall bench_call(const std::string &kernel, int w, int h, Rng &) {
-  const Image &grey = robot_view(w, h, 0).grey;
+  const Image &grey = bench_scene(w, h).grey[0];  // hermetic: scene/bench_scene.h
   const std::string name = std::to_string(w) + "x" + std::to_string(h);
   if (kernel == "free_space") return free_call(floor_mask(grey, kTol, 4), w, h, w, 3, name);
   bvb_region_params prm{w / 2, h - 1, kTol, 4};
@@ -187,7 +188,7 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &) {
 // the rows it must scan: in each strip of columns (64 wide in frames wider than 320, else the
 // whole row) from the bottom up to the row where the strip's last column is decided.
 double lower_bound(const std::string &kernel, int w, int h) {
-  const Image &grey = robot_view(w, h, 0).grey;
+  const Image &grey = bench_scene(w, h).grey[0];  // hermetic: scene/bench_scene.h
   if (kernel == "free_space") {
     const std::vector<uint8_t> mask = floor_mask(grey, kTol, 4);
     const int min_gap = 3, strip = w > 320 ? 64 : w;

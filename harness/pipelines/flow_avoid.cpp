@@ -158,10 +158,10 @@ void check(Checker &ck) {
 
 CheckCall bench_call(const std::string &, int w, int h, Rng &) {
   if (!((w == 160 && h == 120) || (w == 320 && h == 240))) return {};
-  // Two frames of the boxes arena's start, 0.5 in apart: the second computes the flow.
-  const std::string spec = "arena=boxes,path=straight,frames=2,uyvy=0,flow=0,size=" + std::to_string(w) + "x" + std::to_string(h);
+  // The bench scene's two frames (frames/scenes/bench_boxes: half an inch apart):
+  // the second computes the flow.
   Params prm;
-  auto calls = pipe::host_sequence(kFlowAvoid, pipe::render_frames(spec, 2), prm, kState);
+  auto calls = pipe::host_sequence(kFlowAvoid, pipe::bench_frames(w, h), prm, kState);
   CheckCall c = std::move(calls[1]);
   c.case_name = std::to_string(w) + "x" + std::to_string(h);
   return c;

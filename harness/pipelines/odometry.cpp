@@ -340,30 +340,26 @@ void check(Checker &ck) {
   for (const Sequence &q : seqs) check_sequence(ck, q);
 }
 
-// Two frames of the boxes arena at w x h, a forward step and a turn between them: the call for
-// the second frame, its state as the first frame left it.
+// The bench scene's two frames at w x h (frames/scenes/bench_boxes: half an inch
+// apart): the call for the second frame, its state as the first frame left it.
 CheckCall bench_call(const std::string &, int w, int h, Rng &) {
-  SceneGenerator gen(parse_scene_spec("arena=boxes,path=F0.5+L3,ss=1,size=" + std::to_string(w) + "x" +
-                                      std::to_string(h)));
+  const std::vector<pipe::SceneFrame> frames = pipe::bench_frames(w, h);
   Params params;
-  const bvb_odo_params p = odometry_params(gen.camera(), params, gen.pose());
+  const bvb_odo_params p = odometry_params(frames[0].camera, params, frames[0].truth.pose);
   std::vector<uint8_t> state;
   CheckCall c;
   for (int f = 0; f < 2; ++f) {
-    const Image grey = gen.render().grey;
-    const FrameTruth t = gen.truth();
     FrameInput fi;
     fi.index = f;
-    fi.truth = t;
+    fi.truth = frames[size_t(f)].truth;
     const bvb_pipe_frame info = pipe::frame_info(fi, 0);
-    c = odometry_call(grey, w, info, p, state, false, std::to_string(w) + "x" + std::to_string(h));
+    c = odometry_call(frames[size_t(f)].grey, w, info, p, state, false, std::to_string(w) + "x" + std::to_string(h));
     if (f == 0) {
       std::vector<std::vector<uint8_t>> bufs;
       for (const auto &b : c.bufs) bufs.push_back(b.data);
       HostBuffers hb(bufs);
       c.host(hb);
       state = bufs[kOdoStateBuf];
-      gen.advance();
     }
   }
   return c;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "elf_symbols.h"
+#include "scene/bench_scene.h"
 #include "io.h"
 #include "target.h"
 
@@ -93,6 +94,13 @@ std::vector<SceneFrame> bundled_frames(const std::string &name, int first, int c
   std::vector<SceneFrame> out;
   for (int f = first; f < std::min(d.frames, first + count); ++f)
     out.push_back({d.grey(f), d.truth[size_t(f)], d.camera});
+  return out;
+}
+
+std::vector<SceneFrame> bench_frames(int w, int h) {
+  const BenchScene &b = bench_scene(w, h);
+  std::vector<SceneFrame> out;
+  for (size_t f = 0; f < b.grey.size(); ++f) out.push_back({b.grey[f], b.truth[f], b.camera});
   return out;
 }
 

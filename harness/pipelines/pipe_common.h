@@ -59,6 +59,9 @@ std::vector<SceneFrame> render_frames(const std::string &spec, int count);
 // Frames [first, first + count) of a bundled scene (frames/scenes/NAME).
 std::vector<SceneFrame> bundled_frames(const std::string &name, int first, int count);
 std::string bundled_scene_dir(const std::string &name);
+// The benches' two frames at w x h (scene/bench_scene.h: stored, hash-checked, resampled with
+// integer code), so that a pipeline's bench input is the same bytes on every host.
+std::vector<SceneFrame> bench_frames(int w, int h);
 
 // Runs `def` over `frames` on the host and returns each frame's call with the state it starts
 // from filled in (the host build's state after the previous frame): each call then checks one

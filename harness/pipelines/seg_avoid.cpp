@@ -133,11 +133,11 @@ void check(Checker &ck) {
 
 CheckCall bench_call(const std::string &, int w, int h, Rng &) {
   if (!((w == 160 && h == 120) || (w == 320 && h == 240))) return {};
-  // The boxes arena's start, looking at the red box: the ground region covers most of the
-  // floor, and the state is the one the first frame leaves.
-  const std::string spec = "arena=boxes,path=straight,frames=2,uyvy=0,flow=0,size=" + std::to_string(w) + "x" + std::to_string(h);
+  // The bench scene (frames/scenes/bench_boxes): the boxes arena's start, looking at the red
+  // box, then half an inch on; the call is the second frame's, from the state the
+  // first leaves.
   Params prm;
-  auto calls = pipe::host_sequence(kSegAvoid, pipe::render_frames(spec, 2), prm, kState);
+  auto calls = pipe::host_sequence(kSegAvoid, pipe::bench_frames(w, h), prm, kState);
   CheckCall c = std::move(calls[1]);
   c.case_name = std::to_string(w) + "x" + std::to_string(h);
   return c;
