@@ -1,5 +1,5 @@
 // SHA-256 (FIPS 180-4), for checking that files the budgets depend on are the bytes they were
-// measured on (frames/scenes/bench_boxes/SHA256SUMS, in the format `sha256sum -c` reads).
+// measured on (frames/scenes/bench_boxes_*/SHA256SUMS, in the format `sha256sum -c` reads).
 #pragma once
 
 #include <cstddef>

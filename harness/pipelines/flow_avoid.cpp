@@ -158,7 +158,7 @@ void check(Checker &ck) {
 
 CheckCall bench_call(const std::string &, int w, int h, Rng &) {
   if (!((w == 160 && h == 120) || (w == 320 && h == 240))) return {};
-  // The bench scene's two frames (frames/scenes/bench_boxes: half an inch apart):
+  // The bench scene's two frames (frames/scenes/bench_boxes_WxH: half an inch apart):
   // the second computes the flow.
   Params prm;
   auto calls = pipe::host_sequence(kFlowAvoid, pipe::bench_frames(w, h), prm, kState);

@@ -340,7 +340,7 @@ void check(Checker &ck) {
   for (const Sequence &q : seqs) check_sequence(ck, q);
 }
 
-// The bench scene's two frames at w x h (frames/scenes/bench_boxes: half an inch
+// The bench scene's two frames at w x h (frames/scenes/bench_boxes_WxH: half an inch
 // apart): the call for the second frame, its state as the first frame left it.
 CheckCall bench_call(const std::string &, int w, int h, Rng &) {
   const std::vector<pipe::SceneFrame> frames = pipe::bench_frames(w, h);

@@ -133,7 +133,7 @@ void check(Checker &ck) {
 
 CheckCall bench_call(const std::string &, int w, int h, Rng &) {
   if (!((w == 160 && h == 120) || (w == 320 && h == 240))) return {};
-  // The bench scene (frames/scenes/bench_boxes): the boxes arena's start, looking at the red
+  // The bench scene (frames/scenes/bench_boxes_WxH): the boxes arena's start, looking at the red
   // box, then half an inch on; the call is the second frame's, from the state the
   // first leaves.
   Params prm;

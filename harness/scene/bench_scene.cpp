@@ -12,7 +12,10 @@
 
 namespace bvb {
 
-std::string bench_scene_dir() { return std::string(BVB_SOURCE_DIR) + "/frames/scenes/bench_boxes"; }
+std::string bench_scene_dir(int w, int h) {
+  if (!((w == 160 && h == 120) || (w == 320 && h == 240))) return "";
+  return std::string(BVB_SOURCE_DIR) + "/frames/scenes/bench_boxes_" + std::to_string(w) + "x" + std::to_string(h);
+}
 
 void verify_sha256sums(const std::string &dir, const std::vector<std::string> &required) {
   const std::string sums_path = dir + "/SHA256SUMS";
@@ -110,7 +113,8 @@ const BenchScene &bench_scene(int w, int h) {
   std::lock_guard<std::mutex> lock(mu);
   auto it = cache.find({w, h});
   if (it != cache.end()) return it->second;
-  const std::string dir = bench_scene_dir();
+  std::string dir = bench_scene_dir(w, h);
+  if (dir.empty()) dir = bench_scene_dir(320, 240);
   verify_sha256sums(dir, {"scene.txt", "truth.csv", "arena.txt", "frame_0000.pgm", "frame_0001.pgm"});
   const SceneData d = read_scene(dir);
   BenchScene s;

@@ -1,9 +1,9 @@
-// The benches' camera frames: frames/scenes/bench_boxes, the boxes arena seen from its start,
-// looking at the red box, and half an inch further on, rendered once at 320x240 by
-// `bfbench scene --spec "$(sed -n 's/^spec = //p' frames/scenes/bench_boxes/scene.txt)"` and kept
-// in the repository. Its files are checked against its SHA256SUMS when loaded, and the other sizes are
-// made from them by integer resampling, so that a bench's input, and so its exact budget, is the
-// same bytes on every host (the renderer computes in floating point through libm).
+// The benches' camera frames: the boxes arena seen from its start, looking at the red box, and
+// half an inch further on, rendered once by `bfbench scene` at 160x120 and 320x240 and kept in
+// the repository (frames/scenes/bench_boxes_WxH; each scene.txt gives the spec that made it).
+// Their files are checked against their SHA256SUMS when loaded, and other sizes are made from
+// the 320x240 frames by integer resampling, so that a bench's input, and so its exact budget, is
+// the same bytes on every host (the renderer computes in floating point through libm).
 #pragma once
 
 #include <string>
@@ -24,7 +24,8 @@ struct BenchScene {
 // The bench scene at w x h (cached). Throws InputError when a file is missing or its bytes are
 // not the ones SHA256SUMS names.
 const BenchScene &bench_scene(int w, int h);
-std::string bench_scene_dir();
+// The stored scene at w x h, or "" when that size is not stored.
+std::string bench_scene_dir(int w, int h);
 
 // Verifies every file `dir`/SHA256SUMS lists (lines "<64 hex digits>  <name>", as sha256sum
 // writes them) and that `required` are among them; throws InputError naming the first problem.
