@@ -223,6 +223,19 @@ static void scratch_layout(void *scratch, int32_t hx, int32_t hy, int16_t **tmpl
   *work = (int16_t *)(base + x + 4 * n);
 }
 
+const uint8_t *bvb_lk_scratch_place(const uint8_t *area, uint32_t bytes, int32_t win_w, int32_t win_h) {
+  const uint32_t hx = (uint32_t)(win_w >> 1), hy = (uint32_t)(win_h >> 1);
+  const uint32_t n = (2 * hx + 2) * (2 * hy + 1);
+  const uint32_t ysize = 4 * n + 8, xsize = 4 * n + (2 * (2 * hy + 1) + 5) * (4 * hx + 8) + 4;
+  if (bytes < BVB_LK_SCRATCH_BYTES || ysize + xsize > BVB_LK_SCRATCH_BYTES) return area;
+  /* scratch_layout splits at the boundary b bytes in when ysize <= b <= 4096 - xsize: b = 4096 -
+   * (address & 4095), so the start's low bits want to lie in [xsize, 4096 - ysize] */
+  const uint32_t lo = (uint32_t)((uintptr_t)area & 4095u), room = bytes - BVB_LK_SCRATCH_BYTES;
+  if (lo >= xsize && lo <= 4096 - ysize) return area;
+  const uint32_t d = (((xsize + 3) & ~3u) + 4096 - lo) & 4095u;
+  return d <= room ? area + d : area;
+}
+
 static int32_t inside(int32_t q7x, int32_t q7y, int32_t hx, int32_t hy, int32_t w, int32_t h, int32_t margin) {
   const int32_t ix = q7x >> 7, iy = q7y >> 7;
   return ix - hx - margin >= 0 && ix + hx + 1 + margin <= w - 1 && iy - hy - margin >= 0 &&

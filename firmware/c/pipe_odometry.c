@@ -161,12 +161,16 @@ struct odo_setup {
       x_nres, x_nscr, x_map, x_pairs, x_d, x_e, x_sort, x_resp, x_cand, x_corners, x_total;
   /* fast offsets: the job, then the tracker's buffers (f_lk*) and this frame's pyramid, and
    * over the same bytes later the Harris stages' (f_hscr .. f_strip) */
-  uint32_t f_job, f_lkin, f_lkout, f_lkscr, f_hscr, f_nmsscr, f_save, f_strip, f_pyr, f_total;
+  uint32_t f_job, f_lkin, f_lkout, f_lkscr, f_pscratch, f_hscr, f_nmsscr, f_save, f_strip, f_pyr, f_total;
   int32_t pyr_fast;            /* this frame's pyramid in fast (f_pyr), else in work (x_pyr) */
   uint32_t pyr_scr_bytes;      /* the pyramid's stream scratch at f_lkin (0: none) */
   int32_t strip_rows;          /* response rows per strip in fast (f_strip); 0: the whole map in
                                 * work (x_resp) */
 };
+
+/* Bytes beyond the tracker's scratch that let bvb_lk_scratch_place choose where it starts, so
+ * that its arrays fall in different L1 sub-banks wherever fast is. */
+#define LK_SCRATCH_SLACK 1536u
 
 /* Fewest response rows per strip worth the per-call costs (each strip brings 4 image rows more
  * than it makes and copies 2 response rows back and forth); below it the map goes to work. */
@@ -293,7 +297,7 @@ static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_par
   s->f_lkin = o;
   s->f_lkout = s->f_lkin + 8 * M;
   s->f_lkscr = s->f_lkout + 4 * BVB_LK_OUT_WORDS * M;
-  const uint32_t lk_end = s->f_lkscr + BVB_LK_SCRATCH_BYTES;
+  const uint32_t lk_end = s->f_lkscr + BVB_LK_SCRATCH_BYTES + LK_SCRATCH_SLACK;
   /* The pyramid after them while fast stays within BVB_ODO_FAST_MAX (160x120: 11 KB so far):
    * the tracker reads it there, and its copy into the state leaves L1 by DMA. */
   s->f_pyr = lk_end;
@@ -327,6 +331,9 @@ static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_par
     o = k ? o + (k + 4) * rowb : s->f_save;
   }
   s->f_total = o > lk_total ? o : lk_total;
+  /* Stage 1's profile scratch at the start of fast (nothing else is there yet) when it fits in
+   * what the later stages take, so that the band streams through L1; else in work. */
+  s->f_pscratch = BVB_SCANLINE_PROFILE_SCRATCH_BYTES(W) <= s->f_total ? 0 : UINT32_MAX;
   o = x_rest;
   s->x_resp = o;
   if (!s->strip_rows) o += 4 * W * (uint32_t)s->hreg;
@@ -503,7 +510,9 @@ static int32_t track(const struct bvb_odo_kernels *ops, const struct bvb_odo_par
     lp.flags = 0;
     lp.count = n;
     for (int32_t i = 0; i < 2 * n; ++i) in[i] = st->feat[i];
-    ops->lk_track(prev, prev_pyr, frame, pyr, w, h, stride, &lp, in, out, fx + s->f_lkscr);
+    void *scr = (void *)bvb_lk_scratch_place(fx + s->f_lkscr, BVB_LK_SCRATCH_BYTES + LK_SCRATCH_SLACK, p->lk_win,
+                                             p->lk_win);
+    ops->lk_track(prev, prev_pyr, frame, pyr, w, h, stride, &lp, in, out, scr);
     for (int32_t i = 0; i < n; ++i) {
       const int32_t *o = out + BVB_LK_OUT_WORDS * i;
       if (o[2] != BVB_LK_TRACKED) continue;
@@ -737,7 +746,8 @@ int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *
   f.heading = first ? p->start_heading : st->heading;
 
   /* 1: the band's profile (in angle bins) */
-  ops->profile(frame + p->band_y0 * stride, w, p->band_rows, stride, profile, x + s.x_pscratch);
+  ops->profile(frame + p->band_y0 * stride, w, p->band_rows, stride, profile,
+               s.f_pscratch == UINT32_MAX ? x + s.x_pscratch : fx + s.f_pscratch);
   if (first && p->rot_bins) make_table(p, &s, table);
   if (p->rot_bins) resample(profile, p->win_x0 + p->win_w - 1, table, s.bins, cur);
   if (++k >= stages) goto done;
