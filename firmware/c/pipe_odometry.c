@@ -163,6 +163,8 @@ struct odo_setup {
    * over the same bytes later the Harris stages' (f_hscr .. f_strip) */
   uint32_t f_job, f_lkin, f_lkout, f_lkscr, f_pscratch, f_hscr, f_nmsscr, f_save, f_strip, f_pyr, f_total;
   int32_t pyr_fast;            /* this frame's pyramid in fast (f_pyr), else in work (x_pyr) */
+  uint32_t f_ppyr;             /* the previous frame's pyramid brought into fast, if ppyr_fast */
+  int32_t ppyr_fast;
   uint32_t pyr_scr_bytes;      /* the pyramid's stream scratch at f_lkin (0: none) */
   int32_t strip_rows;          /* response rows per strip in fast (f_strip); 0: the whole map in
                                 * work (x_resp) */
@@ -303,6 +305,11 @@ static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_par
   s->f_pyr = lk_end;
   s->pyr_fast = lk_end + s->pyr_bytes <= BVB_ODO_FAST_MAX;
   uint32_t lk_total = s->pyr_fast ? lk_end + s->pyr_bytes : lk_end;
+  /* And the previous frame's pyramid after it when that fits too: brought from the state by
+   * memory DMA during the rotation, so that the tracker's templates read L1. */
+  s->f_ppyr = lk_total;
+  s->ppyr_fast = s->pyr_fast && s->f_ppyr + s->pyr_bytes <= BVB_ODO_FAST_MAX;
+  if (s->ppyr_fast) lk_total = s->f_ppyr + s->pyr_bytes;
   /* The pyramid's stream (the frame's rows through L1 by DMA, bvb/stream.h) over the
    * tracker's buffers, which stage 4 fills only after it, up to the pyramid or the end of
    * fast. */
@@ -751,8 +758,11 @@ int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *
   if (first && p->rot_bins) make_table(p, &s, table);
   if (p->rot_bins) resample(profile, p->win_x0 + p->win_w - 1, table, s.bins, cur);
   if (++k >= stages) goto done;
-  /* 2: rotation */
+  /* 2: rotation, while the previous frame's pyramid comes into fast for the tracker */
+  const int32_t ppyr = !first && lk && s.ppyr_fast;
+  if (ppyr) ops->copy(fx + s.f_job, fx + s.f_ppyr, prev_pyr, s.pyr_bytes, 0, 0, 0);
   if (!first) rotation(ops, p, &s, st, key, cur, left, right, x, &f);
+  if (ppyr) ops->copy_wait();
   if (++k >= stages) goto done;
   /* 3: this frame's pyramid */
   if (lk) ops->lk_pyramid(frame, w, h, stride, p->lk_levels, pyr, fx + s.f_lkin, s.pyr_scr_bytes);
@@ -768,7 +778,9 @@ int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *
   else if (full)
     copy_state(&s, next, frame, next_pyr, pyr, lk);
   /* 4: the previous frame's features tracked into this one */
-  if (!first) f.tracked = track(ops, p, &s, st, prev, prev_pyr, frame, pyr, x, fx, (int32_t *)(x + s.x_pairs));
+  if (!first)
+    f.tracked = track(ops, p, &s, st, prev, ppyr ? fx + s.f_ppyr : prev_pyr, frame, pyr, x, fx,
+                      (int32_t *)(x + s.x_pairs));
   if (++k >= stages) goto done;
   /* 5: translation and pose */
   if (!first) estimate(p, &s, st, x, &f);
