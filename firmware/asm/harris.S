@@ -26,9 +26,15 @@
  * the two transfers (bvb_dma_move; an odd src_stride prepares the input again: the rows
  * alternate between byte and halfword moves) and starts the job: about 290 cycles in the
  * simulator's count. On the stream per row: width bytes in and 4 width out, 2.5 width SCLK,
- * 10 width core cycles at CCLK:SCLK = 4, under the 14 per pixel of compute. Otherwise (a
- * frame in L1 both ways, scratch in SDRAM, or a transfer DMA refuses) the direct path reads
- * and writes the frames in place.
+ * 10 width core cycles at CCLK:SCLK = 4, under the 14 per pixel of compute. With dst in L1 (the
+ * odometry's response strips, bvb_odo_harris_strips) nothing goes out by DMA (F_DOUT): the
+ * core writes each response row and the four zero border rows into dst itself, and the jobs
+ * carry the image rows alone; before, job B held the stream for the border rows' 16 width
+ * bytes (some 5,000 cycles at 160 wide, waited for at the first row) and every call ended
+ * waiting for its last row's transfer: the odometry's three strip calls at 160x120 went from
+ * 293.2k to 234.4k cycles with their NMS (bfbench bench -k pipe_odometry, info.stages 5 -> 6).
+ * Otherwise (a frame in L1 both ways, scratch in SDRAM, or a transfer DMA refuses) the direct
+ * path reads and writes the frames in place.
  *
  * Lower bound: per pixel, the gradients (0.5 BYTEOP16M and 1 vector shift), 9 products on the
  * dual MACs (4.5), three 3-column sums at 2 vector adds per pair (3.0) and the response (hh, kh
@@ -37,9 +43,11 @@
  *
  * Measured (bfbench bench, frames in SDRAM, scratch in L1B; modelled cycles under --timing
  * bf537, then the simulator's own count, --timing none):
- *   160x120     365,330  19.03 per pixel (bound 11.5: 1.65x)   sim   308,916
- *   320x240   1,243,212  16.19           (1.41x)                sim 1,116,796
- *   640x480   4,427,685  14.41           (1.25x)                sim 4,230,156
+ *   160x120     365,829  19.05 per pixel (bound 11.5: 1.66x)   sim   309,415
+ *   320x240   1,244,191  16.20           (1.41x)                sim 1,117,775
+ *   640x480   4,429,624  14.42           (1.25x)                sim 4,232,095
+ *   (dst in SDRAM: the test of where dst is costs some 8 cycles a row over the counts before
+ *   it, 365,330 / 1,243,212 / 4,427,685.)
  *   (C -O2 from SDRAM: 3,008,323 / 12,238,890 / 49,397,594.) Before the DMA path (frames and
  *   scratch read and written in place in SDRAM through the data cache): 793,108 modelled at
  *   160x120 (41 per pixel; sim 274,911), the response's 4 bytes per pixel paying a line fill
