@@ -226,6 +226,45 @@ TEST(LucasKanadePyramid, TwoByTwoAverageWithRounding) {
   EXPECT_EQ(bvb_lk_level_offset(w, h, 2), 8u);
 }
 
+// bvb_lk_scratch_place: wherever the area starts, the 7x7 tracker's scratch (the odometry's)
+// lands at the first 4-byte step whose 4 KB sub-bank boundary splits the driver's two groups of
+// arrays, Y (template and differences, 4 n + 8 bytes, n = (wx + 1) wy) before it and X
+// (gradients and work, 4 n + (2 wy + 5) (4 hx + 8) + 4 bytes) after it; other windows too when
+// the slack allows, else the area itself.
+TEST(LucasKanadeScratch, PlacedWhereTheSubBankBoundarySplitsTheArrays) {
+  const uint32_t slack = 1536, bytes = BVB_LK_SCRATCH_BYTES + slack;
+  std::vector<uint8_t> mem(3 * 4096 + bytes);
+  const uintptr_t a0 = (reinterpret_cast<uintptr_t>(mem.data()) + 4095) & ~uintptr_t(4095);
+  for (int win = 3; win <= 15; win += 2) {
+    const uint32_t hx = uint32_t(win / 2), n = (2 * hx + 2) * (2 * hx + 1);
+    const uint32_t ysize = 4 * n + 8, xsize = 4 * n + (2 * (2 * hx + 1) + 5) * (4 * hx + 8) + 4;
+    auto splits = [&](uintptr_t p) {
+      const uint32_t b = 4096 - uint32_t(p & 4095);
+      return (p & 4095) != 0 && b >= ysize && b + xsize <= BVB_LK_SCRATCH_BYTES;
+    };
+    int moved = 0;
+    for (uint32_t off = 0; off < 4096; off += 4) {
+      const uint8_t *area = reinterpret_cast<const uint8_t *>(a0 + off);
+      const uint8_t *got = bvb_lk_scratch_place(area, bytes, win, win);
+      uintptr_t want = 0;
+      for (uint32_t d = 0; d <= slack && !want; d += 4)
+        if (splits(a0 + off + d)) want = a0 + off + d;
+      if (!want) want = a0 + off;
+      ASSERT_EQ(reinterpret_cast<uintptr_t>(got), want) << win << "x" << win << " at offset " << off;
+      moved += got != area;
+      if (win == 7) {
+        EXPECT_TRUE(splits(reinterpret_cast<uintptr_t>(got))) << "offset " << off;
+      }
+    }
+    if (win == 7) {
+      EXPECT_GT(moved, 0);
+    }
+  }
+  // No room to spare: the area itself.
+  const uint8_t *area = reinterpret_cast<const uint8_t *>(a0 + 8);
+  EXPECT_EQ(bvb_lk_scratch_place(area, BVB_LK_SCRATCH_BYTES, 7, 7), area);
+}
+
 }  // namespace
 
 // Real frames with ground truth: Harris corners of RubberWhale frame10 (the references of

@@ -26,9 +26,15 @@
  * the two transfers (bvb_dma_move; an odd src_stride prepares the input again: the rows
  * alternate between byte and halfword moves) and starts the job: about 290 cycles in the
  * simulator's count. On the stream per row: width bytes in and 4 width out, 2.5 width SCLK,
- * 10 width core cycles at CCLK:SCLK = 4, under the 14 per pixel of compute. Otherwise (a
- * frame in L1 both ways, scratch in SDRAM, or a transfer DMA refuses) the direct path reads
- * and writes the frames in place.
+ * 10 width core cycles at CCLK:SCLK = 4, under the 14 per pixel of compute. With dst in L1 (the
+ * odometry's response strips, bvb_odo_harris_strips) nothing goes out by DMA (F_DOUT): the
+ * core writes each response row and the four zero border rows into dst itself, and the jobs
+ * carry the image rows alone; before, job B held the stream for the border rows' 16 width
+ * bytes (some 5,000 cycles at 160 wide, waited for at the first row) and every call ended
+ * waiting for its last row's transfer: the odometry's three strip calls at 160x120 went from
+ * 293.2k to 234.4k cycles with their NMS (bfbench bench -k pipe_odometry, info.stages 5 -> 6).
+ * Otherwise (a frame in L1 both ways, scratch in SDRAM, or a transfer DMA refuses) the direct
+ * path reads and writes the frames in place.
  *
  * Lower bound: per pixel, the gradients (0.5 BYTEOP16M and 1 vector shift), 9 products on the
  * dual MACs (4.5), three 3-column sums at 2 vector adds per pair (3.0) and the response (hh, kh
@@ -37,9 +43,11 @@
  *
  * Measured (bfbench bench, frames in SDRAM, scratch in L1B; modelled cycles under --timing
  * bf537, then the simulator's own count, --timing none):
- *   160x120     365,330  19.03 per pixel (bound 11.5: 1.65x)   sim   308,916
- *   320x240   1,243,212  16.19           (1.41x)                sim 1,116,796
- *   640x480   4,427,685  14.41           (1.25x)                sim 4,230,156
+ *   160x120     365,829  19.05 per pixel (bound 11.5: 1.66x)   sim   309,415
+ *   320x240   1,244,191  16.20           (1.41x)                sim 1,117,775
+ *   640x480   4,429,624  14.42           (1.25x)                sim 4,232,095
+ *   (dst in SDRAM: the test of where dst is costs some 8 cycles a row over the counts before
+ *   it, 365,330 / 1,243,212 / 4,427,685.)
  *   (C -O2 from SDRAM: 3,008,323 / 12,238,890 / 49,397,594.) Before the DMA path (frames and
  *   scratch read and written in place in SDRAM through the data cache): 793,108 modelled at
  *   160x120 (41 per pixel; sim 274,911), the response's 4 bytes per pixel paying a line fill
@@ -91,7 +99,8 @@
 #define F_ODD    -108  /* src_stride odd: the input slot is prepared again for every row */
 #define F_XIN    -132  /* struct bvb_dma_xfer of the input row (24 bytes) */
 #define F_XOUT   -156  /* ... of the output row */
-#define F_SIZE   156
+#define F_DOUT   -160  /* dst in L1: the core writes the response rows there, no output DMA */
+#define F_SIZE   160
 
 	.global _bvb_harris_response_asm
 	.type _bvb_harris_response_asm, STT_FUNC
@@ -358,9 +367,35 @@ _bvb_harris_response_asm:
  * while the core makes it, one job sends output row y-1 from its L1 row to dst and brings image
  * row y+3 into the ring slot of row y-1, which the gradient of row y+1 no longer needs. */
 .Ldstart:
+	r0 = [fp + F_DOUT];
+	cc = r0 == 0;
+	if !cc jump .Ld_zero_dst;
 	p2 = [fp + F_OUTB];
 	call .Lzero_row;
 	call .Lzero_row;        /* both L1 output rows: the border rows' source */
+	jump .Ld_job_a;
+	/* dst in L1: its rows 0, 1, h-2 and h-1 zeroed by the core (a store a cycle, where their
+	 * transfer would hold the stream for 2 width SCLK before the first row) */
+.Ld_zero_dst:
+	r5 = [fp + F_DST];
+	p2 = r5;
+	call .Lzero_row;
+	r0 = [fp + F_DSTR];
+	r5 = r5 + r0;
+	p2 = r5;
+	call .Lzero_row;
+	r0 = [fp + F_ROWS];     /* h - 4 */
+	r1 = [fp + F_DSTR];
+	r0 *= r1;
+	r5 = r5 + r0;
+	r5 = r5 + r1;           /* row h - 2 */
+	p2 = r5;
+	call .Lzero_row;
+	r0 = [fp + F_DSTR];
+	r5 = r5 + r0;
+	p2 = r5;
+	call .Lzero_row;
+.Ld_job_a:
 	/* job A: image rows 0 .. 3 into slots 0 .. 3 */
 	r0 = [fp + F_SRC];
 	[fp + F_XIN + DMAX_SRC] = r0;
@@ -415,6 +450,10 @@ _bvb_harris_response_asm:
 	call _bvb_dma_prepare;
 	cc = r0 < 0;
 	if cc jump .Ld_refused;
+	r0 = [fp + F_DOUT];
+	cc = r0 == 0;
+	r1 = 1;                 /* dst in L1: job B is row 4 alone */
+	if !cc jump .Ld_job_b;
 	r0 = [fp + F_OUTB];
 	[fp + F_XOUT + DMAX_SRC] = r0;
 	r0 = [fp + F_W];
@@ -450,8 +489,9 @@ _bvb_harris_response_asm:
 	call _bvb_dma_prepare;
 	cc = r0 < 0;
 	if cc jump .Ld_refused;
-	r0 = [fp + F_JOB];
 	r1 = 3;
+.Ld_job_b:
+	r0 = [fp + F_JOB];
 	call _bvb_dma_start;
 	/* gradient row 2 (slot 2) from ring rows 1 .. 3, while job B runs */
 	r0 = [fp + F_MIDP];
@@ -528,7 +568,10 @@ _bvb_harris_response_asm:
 .Ld_mvin:
 	call _bvb_dma_move;
 .Ld_out:
-	/* output row y-1, from y = 3 on */
+	/* output row y-1, from y = 3 on (none when the core writes dst in L1) */
+	r0 = [fp + F_DOUT];
+	cc = r0 == 0;
+	if !cc jump .Ld_one;
 	r0 = [fp + F_Y];
 	r1 = 2;
 	cc = r0 == r1;
@@ -597,6 +640,10 @@ _bvb_harris_response_asm:
 	r0 *= r1;
 	r1 = [fp + F_OUTB];
 	r0 = r0 + r1;
+	r1 = [fp + F_DOUT];
+	cc = r1 == 0;
+	r1 = [fp + F_DDST];
+	if !cc r0 = r1;         /* dst in L1: straight into its row y */
 	[fp + F_DST] = r0;
 	jump .Lrow_body;
 
@@ -612,9 +659,13 @@ _bvb_harris_response_asm:
 	r0 += -1;
 	[fp + F_ROWS] = r0;
 	cc = r0 == 0;
-	if !cc jump .Lrow;
-	/* the last output row, h-3 (y - 1 now) */
+	if cc jump 1f;
+	jump .Lrow;             /* beyond a conditional jump's reach */
+1:	/* the last output row, h-3 (y - 1 now); with dst in L1 only the last input to wait for */
 	call _bvb_dma_wait;
+	r0 = [fp + F_DOUT];
+	cc = r0 == 0;
+	if !cc jump .Lexit;
 	r0 = [fp + F_Y];
 	r0 += -1;
 	r1 = 1;
@@ -659,6 +710,7 @@ _bvb_harris_response_asm:
 	[--sp] = rets;
 	r0 = 0;
 	[fp + F_JOB] = r0;
+	[fp + F_DOUT] = r0;
 	r0 = [fp + F_SLOT0];
 	r0 += -8;               /* scratch */
 	r2.l = 0;
@@ -729,6 +781,14 @@ _bvb_harris_response_asm:
 	r1 = 1;
 	r0 = r0 & r1;
 	[fp + F_ODD] = r0;
+	r0 = 0;
+	r1 = [fp + F_DST];
+	r2.l = 0;
+	r2.h = 0xff80;
+	cc = r1 < r2 (iu);
+	r3 = 1;
+	if !cc r0 = r3;         /* dst in L1 (DMA reaches it, so bank A or B) */
+	[fp + F_DOUT] = r0;
 .Lp_x:
 	rets = [sp++];
 	rts;

@@ -25,10 +25,12 @@
  * level; the rest is the C driver (the flat test and the inverse with its division).
  * Lower bound: 3.5 issues per window pixel and iteration (4 bilinear products: 2 dual-MAC
  * issues, half a vector subtract, 2 products for b: 1 issue), not counting the per-level work.
- * Modelled (--timing bf537, bfbench bench, frames and scratch in SDRAM): 617,443 at 160x120
- * (13.1 per window pixel and iteration against the bound's 3.5), 761,874 at 320x240 (16.2),
- * 823,847 at 640x480 (17.5); the simulator's own count 492,620 / 585,655 / 591,984 (before the
- * scratch layout below and the driver's bit lengths by halving: 710,633 / 869,867 / 934,317).
+ * Modelled (--timing bf537, bfbench bench, frames and scratch in SDRAM): 607,794 at 160x120
+ * (12.9 per window pixel and iteration against the bound's 3.5: 3.69x), 749,813 at 320x240
+ * (15.9: 4.55x), 811,391 at 640x480 (17.2: 4.93x); the simulator's own count 483,731 /
+ * 575,038 / 581,091 (before the driver's bit lengths by SIGNBITS: 617,443 / 761,874 /
+ * 823,847; before the scratch layout below and the bit lengths by halving: 710,633 / 869,867
+ * / 934,317).
  * Where the rest goes: the separable steps' own issues above (the horizontal pass's per-row
  * set-up, the solve's frame loads and stores, the template step, the C driver); under the
  * model the windows' level-0 rows of both frames through the data cache (a line fill per
@@ -38,7 +40,9 @@
  * differences and the gradients with the differences: bvb_lk_track_run puts the template
  * and the differences on one side of a 4 KB sub-bank boundary of the scratch and h and the
  * gradients on the other whenever the scratch spans one (firmware/c/lk.c), so they do not
- * collide.
+ * collide; a caller with room to spare lets bvb_lk_scratch_place pick a start where it does
+ * (the odometry: 28k collision cycles a frame at 160x120 before, where its fast buffer put the
+ * scratch too near a boundary for the layout to split at it).
  * Working set: the window rows of two levels' images and under 4 KB of scratch (L1 on hardware). */
 #include "bvb/lk.h"
 

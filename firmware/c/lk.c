@@ -39,9 +39,14 @@ void bvb_lk_pyramid_c(const uint8_t *src, int32_t width, int32_t height, int32_t
 
 /* ---- fixed-point helpers ---- */
 
-/* Bit length of v (0 for 0), by halving: five steps where a bit-by-bit loop took up to 32
- * (the driver takes two per feature and level). */
+/* Bit length of v (0 for 0), v < 2^31 (every caller's). On the Blackfin one SIGNBITS (GCC's
+ * __builtin_clrsb: the bits below the sign bit that equal it, 31 - bitlen for such v), where
+ * the halving's five compares and branches took some 60 cycles a call (the driver takes two
+ * per feature and level); elsewhere by halving, five steps. */
 static int32_t bitlen(uint32_t v) {
+#if defined(__bfin__)
+  return 31 - __builtin_clrsb((int32_t)v);
+#else
   int32_t n = 0;
   if (v >= 0x10000u) v >>= 16, n += 16;
   if (v >= 0x100u) v >>= 8, n += 8;
@@ -49,6 +54,7 @@ static int32_t bitlen(uint32_t v) {
   if (v >= 0x4u) v >>= 2, n += 2;
   if (v >= 0x2u) v >>= 1, n += 1;
   return n + (int32_t)v;
+#endif
 }
 
 /* The Blackfin's SIGNBITS of a 32-bit value. */
@@ -221,6 +227,19 @@ static void scratch_layout(void *scratch, int32_t hx, int32_t hy, int16_t **tmpl
   *tmpl = (int16_t *)(base + y);
   *grad = (int32_t *)(base + x);
   *work = (int16_t *)(base + x + 4 * n);
+}
+
+const uint8_t *bvb_lk_scratch_place(const uint8_t *area, uint32_t bytes, int32_t win_w, int32_t win_h) {
+  const uint32_t hx = (uint32_t)(win_w >> 1), hy = (uint32_t)(win_h >> 1);
+  const uint32_t n = (2 * hx + 2) * (2 * hy + 1);
+  const uint32_t ysize = 4 * n + 8, xsize = 4 * n + (2 * (2 * hy + 1) + 5) * (4 * hx + 8) + 4;
+  if (bytes < BVB_LK_SCRATCH_BYTES || ysize + xsize > BVB_LK_SCRATCH_BYTES) return area;
+  /* scratch_layout splits at the boundary b bytes in when ysize <= b <= 4096 - xsize: b = 4096 -
+   * (address & 4095), so the start's low bits want to lie in [xsize, 4096 - ysize] */
+  const uint32_t lo = (uint32_t)((uintptr_t)area & 4095u), room = bytes - BVB_LK_SCRATCH_BYTES;
+  if (lo >= xsize && lo <= 4096 - ysize) return area;
+  const uint32_t d = (((xsize + 3) & ~3u) + 4096 - lo) & 4095u;
+  return d <= room ? area + d : area;
 }
 
 static int32_t inside(int32_t q7x, int32_t q7y, int32_t hx, int32_t hy, int32_t w, int32_t h, int32_t margin) {

@@ -161,12 +161,18 @@ struct odo_setup {
       x_nres, x_nscr, x_map, x_pairs, x_d, x_e, x_sort, x_resp, x_cand, x_corners, x_total;
   /* fast offsets: the job, then the tracker's buffers (f_lk*) and this frame's pyramid, and
    * over the same bytes later the Harris stages' (f_hscr .. f_strip) */
-  uint32_t f_job, f_lkin, f_lkout, f_lkscr, f_hscr, f_nmsscr, f_save, f_strip, f_pyr, f_total;
+  uint32_t f_job, f_lkin, f_lkout, f_lkscr, f_pscratch, f_hscr, f_nmsscr, f_save, f_strip, f_pyr, f_total;
   int32_t pyr_fast;            /* this frame's pyramid in fast (f_pyr), else in work (x_pyr) */
+  uint32_t f_ppyr;             /* the previous frame's pyramid brought into fast, if ppyr_fast */
+  int32_t ppyr_fast;
   uint32_t pyr_scr_bytes;      /* the pyramid's stream scratch at f_lkin (0: none) */
   int32_t strip_rows;          /* response rows per strip in fast (f_strip); 0: the whole map in
                                 * work (x_resp) */
 };
+
+/* Bytes beyond the tracker's scratch that let bvb_lk_scratch_place choose where it starts, so
+ * that its arrays fall in different L1 sub-banks wherever fast is. */
+#define LK_SCRATCH_SLACK 1536u
 
 /* Fewest response rows per strip worth the per-call costs (each strip brings 4 image rows more
  * than it makes and copies 2 response rows back and forth); below it the map goes to work. */
@@ -293,12 +299,17 @@ static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_par
   s->f_lkin = o;
   s->f_lkout = s->f_lkin + 8 * M;
   s->f_lkscr = s->f_lkout + 4 * BVB_LK_OUT_WORDS * M;
-  const uint32_t lk_end = s->f_lkscr + BVB_LK_SCRATCH_BYTES;
+  const uint32_t lk_end = s->f_lkscr + BVB_LK_SCRATCH_BYTES + LK_SCRATCH_SLACK;
   /* The pyramid after them while fast stays within BVB_ODO_FAST_MAX (160x120: 11 KB so far):
    * the tracker reads it there, and its copy into the state leaves L1 by DMA. */
   s->f_pyr = lk_end;
   s->pyr_fast = lk_end + s->pyr_bytes <= BVB_ODO_FAST_MAX;
   uint32_t lk_total = s->pyr_fast ? lk_end + s->pyr_bytes : lk_end;
+  /* And the previous frame's pyramid after it when that fits too: brought from the state by
+   * memory DMA during the rotation, so that the tracker's templates read L1. */
+  s->f_ppyr = lk_total;
+  s->ppyr_fast = s->pyr_fast && s->f_ppyr + s->pyr_bytes <= BVB_ODO_FAST_MAX;
+  if (s->ppyr_fast) lk_total = s->f_ppyr + s->pyr_bytes;
   /* The pyramid's stream (the frame's rows through L1 by DMA, bvb/stream.h) over the
    * tracker's buffers, which stage 4 fills only after it, up to the pyramid or the end of
    * fast. */
@@ -327,6 +338,9 @@ static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_par
     o = k ? o + (k + 4) * rowb : s->f_save;
   }
   s->f_total = o > lk_total ? o : lk_total;
+  /* Stage 1's profile scratch at the start of fast (nothing else is there yet) when it fits in
+   * what the later stages take, so that the band streams through L1; else in work. */
+  s->f_pscratch = BVB_SCANLINE_PROFILE_SCRATCH_BYTES(W) <= s->f_total ? 0 : UINT32_MAX;
   o = x_rest;
   s->x_resp = o;
   if (!s->strip_rows) o += 4 * W * (uint32_t)s->hreg;
@@ -503,7 +517,9 @@ static int32_t track(const struct bvb_odo_kernels *ops, const struct bvb_odo_par
     lp.flags = 0;
     lp.count = n;
     for (int32_t i = 0; i < 2 * n; ++i) in[i] = st->feat[i];
-    ops->lk_track(prev, prev_pyr, frame, pyr, w, h, stride, &lp, in, out, fx + s->f_lkscr);
+    void *scr = (void *)bvb_lk_scratch_place(fx + s->f_lkscr, BVB_LK_SCRATCH_BYTES + LK_SCRATCH_SLACK, p->lk_win,
+                                             p->lk_win);
+    ops->lk_track(prev, prev_pyr, frame, pyr, w, h, stride, &lp, in, out, scr);
     for (int32_t i = 0; i < n; ++i) {
       const int32_t *o = out + BVB_LK_OUT_WORDS * i;
       if (o[2] != BVB_LK_TRACKED) continue;
@@ -737,12 +753,16 @@ int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *
   f.heading = first ? p->start_heading : st->heading;
 
   /* 1: the band's profile (in angle bins) */
-  ops->profile(frame + p->band_y0 * stride, w, p->band_rows, stride, profile, x + s.x_pscratch);
+  ops->profile(frame + p->band_y0 * stride, w, p->band_rows, stride, profile,
+               s.f_pscratch == UINT32_MAX ? x + s.x_pscratch : fx + s.f_pscratch);
   if (first && p->rot_bins) make_table(p, &s, table);
   if (p->rot_bins) resample(profile, p->win_x0 + p->win_w - 1, table, s.bins, cur);
   if (++k >= stages) goto done;
-  /* 2: rotation */
+  /* 2: rotation, while the previous frame's pyramid comes into fast for the tracker */
+  const int32_t ppyr = !first && lk && s.ppyr_fast;
+  if (ppyr) ops->copy(fx + s.f_job, fx + s.f_ppyr, prev_pyr, s.pyr_bytes, 0, 0, 0);
   if (!first) rotation(ops, p, &s, st, key, cur, left, right, x, &f);
+  if (ppyr) ops->copy_wait();
   if (++k >= stages) goto done;
   /* 3: this frame's pyramid */
   if (lk) ops->lk_pyramid(frame, w, h, stride, p->lk_levels, pyr, fx + s.f_lkin, s.pyr_scr_bytes);
@@ -758,7 +778,9 @@ int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *
   else if (full)
     copy_state(&s, next, frame, next_pyr, pyr, lk);
   /* 4: the previous frame's features tracked into this one */
-  if (!first) f.tracked = track(ops, p, &s, st, prev, prev_pyr, frame, pyr, x, fx, (int32_t *)(x + s.x_pairs));
+  if (!first)
+    f.tracked = track(ops, p, &s, st, prev, ppyr ? fx + s.f_ppyr : prev_pyr, frame, pyr, x, fx,
+                      (int32_t *)(x + s.x_pairs));
   if (++k >= stages) goto done;
   /* 5: translation and pose */
   if (!first) estimate(p, &s, st, x, &f);

@@ -138,8 +138,17 @@ void check(Checker &ck) {
         std::string name = std::to_string(s.w) + "x" + std::to_string(s.h) + " strides " + std::to_string(ss) +
                            "/" + std::to_string(ds) + " " + in.first;
         CheckCall c = response_call(s.w, s.h, ss, ds, std::move(in.second), name);
-        // Half the calls where the robot runs it (the assembly's DMA path).
+        // Half the calls where the robot runs it (the assembly's DMA path); a third of those with
+        // the response in the other L1 bank where it fits, as the odometry's strips take it (the
+        // core writes the rows there, the DMA brings only the image rows).
         ck.place_streaming(c, 2, rng);
+        if (c.bufs[0].place == BVB_PLACE_SDRAM && c.bufs[2].place != BVB_PLACE_SDRAM && rng.uniform(0, 2) == 0) {
+          const uint32_t other = c.bufs[2].place == BVB_PLACE_L1A ? BVB_PLACE_L1B : BVB_PLACE_L1A;
+          if (c.bufs[1].data.size() + 2 * c.bufs[1].guard + c.bufs[1].align <= ck.target().arena_bytes(other)) {
+            c.bufs[1].place = other;
+            c.case_name += ", response in L1";
+          }
+        }
         c.bufs[0].skew = uint32_t(rng.uniform(0, 3));  // the source has no alignment contract
         ck.add(std::move(c));
       }

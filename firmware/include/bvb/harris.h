@@ -26,8 +26,8 @@
  * contents (working rows; the assembly keeps them there, the C reference uses part of it).
  * Frames in SDRAM, scratch in L1 data SRAM (where the robot runs it): the assembly brings the
  * image rows into L1 and sends the response rows out by memory DMA (bvb/dma.h, one job per
- * output row on MDMA stream 0; firmware/asm/harris.S), the same results; elsewhere it reads
- * and writes the frames in place.
+ * output row on MDMA stream 0; firmware/asm/harris.S), or writes them itself when dst is in
+ * L1 too, the same results; elsewhere it reads and writes the frames in place.
  * The assembly reads the frame by aligned words: bytes of the 4-byte words that hold the rows'
  * pixels, so up to 3 bytes either side of a row, never further. */
 #ifndef BVB_HARRIS_H

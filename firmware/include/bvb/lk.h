@@ -170,6 +170,12 @@ struct bvb_lk_ops {
   bvb_lk_patch_fn patch;
   bvb_lk_iterate_fn iterate;
 };
+/* Where in an area of `bytes` bytes (4-byte aligned, at least BVB_LK_SCRATCH_BYTES) a caller
+ * with room to spare puts the tracker's scratch for win_w x win_h windows: the first 4-byte
+ * aligned start at which the driver's layout can put the iteration's two groups of arrays in
+ * different 4 KB sub-banks (see bvb_lk_track_run in firmware/c/lk.c), else the area itself.
+ * Only speed depends on it. */
+const uint8_t *bvb_lk_scratch_place(const uint8_t *area, uint32_t bytes, int32_t win_w, int32_t win_h);
 void bvb_lk_track_run(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_t *next,
                       const uint8_t *next_pyr, int32_t width, int32_t height, int32_t stride,
                       const struct bvb_lk_params *params, const int32_t *in, int32_t *out,

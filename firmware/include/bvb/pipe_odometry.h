@@ -121,11 +121,14 @@
  *   response map, 4 bytes per pixel of the floor region, when it does not go in strips through
  *   fast). fast:
  *   bvb_pipe_odometry_fast_bytes() bytes, 4-byte aligned, any contents: the working rows that
- *   want L1 data SRAM, one after the other: the tracker's features and scratch with this
- *   frame's LK pyramid, then the Harris response's and the NMS's scratch (there the assembly
+ *   want L1 data SRAM, one after the other: stage 1's profile scratch (the band streams through
+ *   L1), then the tracker's features and scratch (placed by bvb_lk_scratch_place, so that its
+ *   arrays fall in different sub-banks) with this frame's LK pyramid and the previous frame's
+ *   (brought from the state by memory DMA during the rotation), then the Harris response's and
+ *   the NMS's scratch (there the assembly
  *   response streams the frame through L1 by DMA, bvb/harris.h) with strips of the response
  *   map (bvb_odo_harris_strips: 20 rows at 160x120), each scanned by the NMS while in L1; the
- *   pyramid and the strips while the whole stays within BVB_ODO_FAST_MAX bytes. Returns
+ *   pyramids and the strips while the whole stays within BVB_ODO_FAST_MAX bytes. Returns
  *   BVB_PIPE_STOP, or -1 when the parameters are out of range (nothing written).
  *   Limits (else -1): 16 <= width, height <= 1024, width <= stride <= 4096; 1 <= fx, fy <= 1024
  *   px; cam_height 1/16..64 in; tilt -45..45 deg; 1 <= band_rows <= 256 inside the frame; the
