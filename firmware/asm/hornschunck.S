@@ -256,6 +256,629 @@ _bvb_hs_iterate_asm:
 	rts;
 	.size _bvb_hs_iterate_asm, . - _bvb_hs_iterate_asm
 
+#include "bvb/dma.h"
+
+/* ---------------------------------------------------------------------------------------------
+ * bvb_hs_iterate_n_asm(coef, uv_in, in_stride, uv_out, out_stride, width, height, iterations,
+ *                      flow_scratch, coef_scratch): the iterations fused, L levels a pass
+ *                      (bvb/hornschunck.h: FUSED ITERATIONS)
+ * --------------------------------------------------------------------------------------------- */
+
+/* One output row, as a subroutine (the row body of HS_ROWS): I0 = row above (T), I1 = row below
+ * (B), I2 = the row (M), I3 = its (gy':gx') words, P0 = its gt' halves, P1 = the output row,
+ * P2 = (width - 2) / 3; the variant m = (width - 2) mod 3. Clobbers R0-R7, A0, A1, I0-I3,
+ * M0-M2, P0-P2, LC0, ASTAT. T is read one word past its row (unused): the rings' layout puts
+ * another row there. */
+.macro HS_ROW1 m, x0, x1
+	.align 4
+.Lrow1_\m:
+	r7.l = 2731;
+	r7.h = 5461;
+	r1 = 8;
+	m0 = r1;
+	r1 = -4;
+	m1 = r1;
+	r1 = 4;
+	m2 = r1;
+	mnop || r0 = [i0++] || r1 = [i1++];
+	\x0 = r0 +|+ r1 (s) || r0 = [i0++] || r1 = [i1++];
+	\x1 = r0 +|+ r1 (s) || r0 = [i2 ++ m2];
+	a1 = \x0\().h * r7.l, a0 = \x0\().l * r7.l || r1 = [i2 ++ m1];
+	r2 = r0 +|+ r1 (s) || r1 = w[p0++] (x) || r0 = [i3++];
+	a1 += \x1\().h * r7.l, a0 += \x1\().l * r7.l;
+	a1 += r2.h * r7.h, a0 += r2.l * r7.h;
+	r3.h = (a1 += \x0\().h * r7.h), r3.l = (a0 += \x0\().l * r7.h);
+	r3.h = r3.h * r0.h, r3.l = r3.l * r0.l (s2rnd);
+	r3.l = r3.l + r3.h (s);
+	r3.l = r3.l + r1.l (s) || r2 = [i0++];
+.if \m == 1
+	HS_PIX r6, r4, r5
+	r3.l = r3.l + r1.l (s);
+.endif
+.if \m == 2
+	HS_PIX r5, r6, r4
+	r3.l = r3.l + r1.l (s);
+	HS_PIX r6, r4, r5
+	r3.l = r3.l + r1.l (s);
+.endif
+	cc = p2 == 0;
+	if cc jump .Lr1_last\m;
+	lsetup (.Lr1_pix\m, .Lr1_pix_end\m) lc0 = p2;
+.Lr1_pix\m:
+	HS_PIX r4, r5, r6
+	r3.l = r3.l + r1.l (s);
+	HS_PIX r5, r6, r4
+	r3.l = r3.l + r1.l (s);
+	HS_PIX r6, r4, r5
+.Lr1_pix_end\m:
+	r3.l = r3.l + r1.l (s);
+.Lr1_last\m:
+	r3.h = (a1 -= r3.l * r0.h), r3.l = (a0 -= r3.l * r0.l) (ih) || r0 = [i2 ++ m2];
+	a1 = r4.h * r7.l, a0 = r4.l * r7.l || [p1++] = r3 || r1 = [i2];
+	r2 = r0 +|+ r1 (s) || r1 = w[p0++] (x) || r0 = [i3++];
+	a1 += r5.h * r7.l, a0 += r5.l * r7.l;
+	a1 += r2.h * r7.h, a0 += r2.l * r7.h;
+	r3.h = (a1 += r5.h * r7.h), r3.l = (a0 += r5.l * r7.h);
+	r3.h = r3.h * r0.h, r3.l = r3.l * r0.l (s2rnd);
+	r3.l = r3.l + r3.h (s);
+	r3.l = r3.l + r1.l (s);
+	r3.h = (a1 -= r3.l * r0.h), r3.l = (a0 -= r3.l * r0.l) (ih);
+	[p1] = r3;
+	rts;
+.endm
+
+/* Stack frame of bvb_hs_iterate_n_asm (FP-relative locals; arguments 4-10 at FP + 48). */
+#define N_COEF  -4    /* the coefficients (a frame) */
+#define N_SRC   -8    /* this pass's input field: uv_in, then uv_out in place */
+#define N_SS    -12   /* and its stride */
+#define N_W4    -16   /* flow row bytes, 4 width */
+#define N_CP    -20   /* coefficient row bytes */
+#define N_ROT   -24   /* (width - 2) / 3 */
+#define N_FN    -28   /* the row routine for (width - 2) mod 3 */
+#define N_LMAX  -32   /* levels the scratch holds */
+#define N_LEFT  -36   /* iterations left */
+#define N_L     -40   /* levels of this pass */
+#define N_T     -44   /* the step */
+#define N_DMA   -48   /* 1: the rows move by DMA, 0: by the core */
+#define N_R0    -52   /* level 0's ring (4 rows) */
+#define N_RK    -56   /* level 1's ring (3 rows); level k's at N_RK + 12 width (k - 1) */
+#define N_RO    -60   /* the output's ring (2 rows) */
+#define N_CR    -64   /* the coefficient ring (L + 1 rows) */
+#define N_S3    -68   /* t mod 3 */
+#define N_F4    -72   /* level 0's slot of the row arriving, (t + 2) mod 4 */
+#define N_CF    -76   /* the coefficient slot of the row arriving, (t + 1) mod (L + 1) */
+#define N_K     -80   /* the level */
+#define N_R     -84   /* the row it makes, t - k + 1 */
+#define N_K3    -88   /* that row mod 3 */
+#define N_KC    -92   /* that row mod (L + 1) */
+#define N_IN    -96   /* the level's input ring (k >= 2) */
+#define N_OUT   -100  /* the level's output ring (k < L) */
+#define N_W12   -104  /* 12 width: a ring of 3 rows */
+#define N_TEND  -108  /* the last step, height - 1 + L */
+#define N_X0    -132  /* struct bvb_dma_xfer: level 0's row in */
+#define N_X1    -156  /* the coefficient row in */
+#define N_X2    -180  /* the output row out */
+#define N_JOB   -292  /* the DMA job (BVB_DMA_JOB_BYTES) */
+#define N_FRAME 304   /* locals at FP-292..-1, the C calls' 12 bytes of arguments below */
+
+	.section .l1.text, "ax"
+	HS_ROW1 0, r4, r5
+	HS_ROW1 1, r6, r4
+	HS_ROW1 2, r5, r6
+
+	.align 4
+	.global _bvb_hs_iterate_n_asm
+	.type _bvb_hs_iterate_n_asm, STT_FUNC
+_bvb_hs_iterate_n_asm:
+	[--sp] = (r7:4, p5:3);
+	link N_FRAME;
+	[fp + N_COEF] = r0;
+	[fp + N_SRC] = r1;
+	[fp + N_SS] = r2;
+	r0 = [fp + 64];                 /* iterations */
+	cc = r0 <= 0;
+	if !cc jump .Ln_go;
+	jump.l .Ln_ret;
+.Ln_go:
+	[fp + N_LEFT] = r0;
+	r6 = [fp + 56];                 /* width */
+	r0 = r6 << 2;
+	[fp + N_W4] = r0;
+	r1 = r0 + r0;
+	r1 = r1 + r0;
+	[fp + N_W12] = r1;
+	r1 = r6 << 1;
+	r0 = r0 + r1;
+	r1 = 1;
+	r1 = r1 & r6;
+	r1 = r1 << 1;
+	r0 = r0 + r1;
+	[fp + N_CP] = r0;               /* 2 BVB_HS_COEF_PITCH */
+	r0 = r6;
+	r0 += -2;
+	r1.l = 0xaaab;
+	r1.h = 0;
+	r2 = r0;
+	r2 *= r1;
+	r2 >>= 17;
+	[fp + N_ROT] = r2;
+	r1 = r2 << 1;
+	r1 = r1 + r2;
+	r0 = r0 - r1;
+	p0.l = .Lrow1_0;
+	p0.h = .Lrow1_0;
+	p1.l = .Lrow1_1;
+	p1.h = .Lrow1_1;
+	cc = r0 == 1;
+	if cc p0 = p1;
+	p1.l = .Lrow1_2;
+	p1.h = .Lrow1_2;
+	cc = r0 == 2;
+	if cc p0 = p1;
+	[fp + N_FN] = p0;
+	/* the most levels whose flow rows, 12 width (L + 1) bytes, fit BVB_HS_ITER_L1_BUDGET */
+	r0 = 8;
+	r1 = [fp + N_W12];
+	r2.l = 20480;
+	r2.h = 0;
+.Ln_lmax:
+	cc = r0 == 1;
+	if cc jump .Ln_lmax_done;
+	r3 = r0;
+	r3 += 1;
+	r3 *= r1;
+	cc = r3 <= r2;
+	if cc jump .Ln_lmax_done;
+	r0 += -1;
+	jump .Ln_lmax;
+.Ln_lmax_done:
+	[fp + N_LMAX] = r0;
+
+.Ln_pass:
+	/* passes = ceil(left / lmax), L = ceil(left / passes) */
+	r0 = [fp + N_LEFT];
+	r1 = [fp + N_LMAX];
+	r2 = 1;
+	r3 = r1;
+.Ln_pp:
+	cc = r0 <= r3;
+	if cc jump .Ln_pp_done;
+	r2 += 1;
+	r3 = r3 + r1;
+	jump .Ln_pp;
+.Ln_pp_done:
+	r4 = 1;
+	r5 = r2;
+.Ln_ll:
+	cc = r0 <= r5;
+	if cc jump .Ln_ll_done;
+	r4 += 1;
+	r5 = r5 + r2;
+	jump .Ln_ll;
+.Ln_ll_done:
+	[fp + N_L] = r4;
+	/* the rings: level 0 (4 rows), levels 1..L-1 (3 each), the output (2); coefficients L+1 */
+	r0 = [fp + 68];
+	[fp + N_R0] = r0;
+	r1 = [fp + N_W4];
+	r1 <<= 2;
+	r0 = r0 + r1;
+	[fp + N_RK] = r0;
+	r1 = [fp + N_W12];
+	r2 = r4;
+	r2 += -1;
+	r2 *= r1;
+	r0 = r0 + r2;
+	[fp + N_RO] = r0;
+	r0 = [fp + 72];
+	[fp + N_CR] = r0;
+	r0 = [fp + 60];
+	r0 += -1;
+	r0 = r0 + r4;
+	[fp + N_TEND] = r0;
+	/* the three transfers, at their first rows */
+	r0 = [fp + N_SRC];
+	[fp + N_X0 + DMAX_SRC] = r0;
+	r0 = [fp + N_SS];
+	[fp + N_X0 + DMAX_SS] = r0;
+	r0 = [fp + N_R0];
+	[fp + N_X0 + DMAX_DST] = r0;
+	r0 = [fp + N_W4];
+	[fp + N_X0 + DMAX_DS] = r0;
+	[fp + N_X0 + DMAX_W] = r0;
+	r1 = 1;
+	[fp + N_X0 + DMAX_ROWS] = r1;
+	[fp + N_X2 + DMAX_SS] = r0;
+	[fp + N_X2 + DMAX_W] = r0;
+	[fp + N_X2 + DMAX_ROWS] = r1;
+	[fp + N_X1 + DMAX_ROWS] = r1;
+	r0 = [fp + N_RO];
+	[fp + N_X2 + DMAX_SRC] = r0;
+	r0 = [fp + 48];
+	[fp + N_X2 + DMAX_DST] = r0;
+	r0 = [fp + 52];
+	[fp + N_X2 + DMAX_DS] = r0;
+	r0 = [fp + N_COEF];
+	[fp + N_X1 + DMAX_SRC] = r0;
+	r0 = [fp + N_CR];
+	[fp + N_X1 + DMAX_DST] = r0;
+	r0 = [fp + N_CP];
+	[fp + N_X1 + DMAX_SS] = r0;
+	[fp + N_X1 + DMAX_DS] = r0;
+	[fp + N_X1 + DMAX_W] = r0;
+	/* DMA when it takes all three (every buffer where it reaches), else the core copies */
+	r7 = 0;
+	r0 = fp;
+	r1 = N_JOB (x);
+	r0 = r0 + r1;
+	r1 = 0;
+	r2 = fp;
+	r3 = N_X0 (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	cc = r0 == 0;
+	if !cc jump .Ln_mode;
+	r0 = fp;
+	r1 = N_JOB (x);
+	r0 = r0 + r1;
+	r1 = 1;
+	r2 = fp;
+	r3 = N_X1 (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	cc = r0 == 0;
+	if !cc jump .Ln_mode;
+	r0 = fp;
+	r1 = N_JOB (x);
+	r0 = r0 + r1;
+	r1 = 2;
+	r2 = fp;
+	r3 = N_X2 (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	cc = r0 == 0;
+	if !cc jump .Ln_mode;
+	r7 = 1;
+.Ln_mode:
+	[fp + N_DMA] = r7;
+	r0 = -2;
+	[fp + N_T] = r0;
+	r0 = 1;
+	[fp + N_S3] = r0;
+	r0 = 0;
+	[fp + N_F4] = r0;
+	r0 = [fp + N_L];
+	[fp + N_CF] = r0;
+
+.Ln_step:
+	/* wait for the job of the step before */
+	r0 = [fp + N_T];
+	r1 = -2;
+	cc = r0 == r1;
+	if cc jump .Ln_nowait;
+	r1 = [fp + N_DMA];
+	cc = r1 == 0;
+	if cc jump .Ln_nowait;
+	call _bvb_dma_wait;
+.Ln_nowait:
+	/* this step's job: level 0's row t + 2 in (row h - 1 past the end: a slot no one reads),
+	 * coefficient row t + 1 in (t >= -1), output row t - L out (t >= L) */
+	r2 = [fp + 60];
+	r2 += -1;
+	r3 = 0;
+	r0 = [fp + N_T];
+	r0 += 2;
+	r0 = min (r0, r2);
+	r1 = [fp + N_SS];
+	r0 *= r1;
+	r1 = [fp + N_SRC];
+	r0 = r0 + r1;
+	[fp + N_X0 + DMAX_SRC] = r0;
+	r0 = [fp + N_F4];
+	r1 = [fp + N_W4];
+	r0 *= r1;
+	r1 = [fp + N_R0];
+	r0 = r0 + r1;
+	[fp + N_X0 + DMAX_DST] = r0;
+	r0 = [fp + N_T];
+	r0 += 1;
+	r0 = min (r0, r2);
+	r0 = max (r0, r3);
+	r1 = [fp + N_CP];
+	r0 *= r1;
+	r1 = [fp + N_COEF];
+	r0 = r0 + r1;
+	[fp + N_X1 + DMAX_SRC] = r0;
+	r0 = [fp + N_CF];
+	r1 = [fp + N_CP];
+	r0 *= r1;
+	r1 = [fp + N_CR];
+	r0 = r0 + r1;
+	[fp + N_X1 + DMAX_DST] = r0;
+	r0 = [fp + N_T];
+	r0 += -1;
+	r1 = 1;
+	r0 = r0 & r1;
+	r1 = [fp + N_W4];
+	r0 *= r1;
+	r1 = [fp + N_RO];
+	r0 = r0 + r1;
+	[fp + N_X2 + DMAX_SRC] = r0;
+	r0 = [fp + N_T];
+	r1 = [fp + N_L];
+	r0 = r0 - r1;
+	r0 = max (r0, r3);
+	r1 = [fp + 52];
+	r0 *= r1;
+	r1 = [fp + 48];
+	r0 = r0 + r1;
+	[fp + N_X2 + DMAX_DST] = r0;
+	r0 = [fp + N_T];
+	r1 = [fp + N_L];
+	r2 = 3;
+	r3 = 2;
+	cc = r0 < r1;
+	if cc r2 = r3;
+	r3 = -2;
+	cc = r0 == r3;
+	r3 = 1;
+	if cc r2 = r3;
+	call .Ln_job;
+
+	/* the levels: level k makes row t - k + 1 where that is a row */
+	r0 = [fp + N_T];
+	cc = r0 < 0;
+	if cc jump .Ln_next;
+	r1 = [fp + N_TEND];
+	cc = r0 == r1;
+	if cc jump .Ln_next;
+	[fp + N_R] = r0;
+	r1 = [fp + N_S3];
+	[fp + N_K3] = r1;
+	r1 = [fp + N_CF];
+	r1 += -1;
+	cc = r1 < 0;
+	r2 = [fp + N_L];
+	if cc r1 = r2;
+	[fp + N_KC] = r1;
+	r1 = 1;
+	[fp + N_K] = r1;
+	r1 = [fp + N_RK];
+	[fp + N_OUT] = r1;
+.Ln_level:
+	r1 = [fp + N_R];
+	cc = r1 < 0;
+	if cc jump .Ln_lnext;
+	r3 = [fp + 60];
+	r3 += -1;
+	cc = r3 < r1;
+	if cc jump .Ln_lnext;
+	/* input rows: ring base R6, slot R4, R5 slots */
+	r0 = [fp + N_K];
+	cc = r0 == 1;
+	if !cc jump .Ln_in3;
+	r4 = [fp + N_F4];
+	r4 += 2;
+	r0 = 3;
+	r4 = r4 & r0;
+	r5 = 4;
+	r6 = [fp + N_R0];
+	jump .Ln_in;
+.Ln_in3:
+	r4 = [fp + N_K3];
+	r5 = 3;
+	r6 = [fp + N_IN];
+.Ln_in:
+	r0 = r4;
+	r0 += -1;
+	cc = r0 < 0;
+	r2 = r0 + r5;
+	if cc r0 = r2;                  /* the slot above */
+	r2 = r4;
+	r2 += 1;
+	cc = r2 == r5;
+	r5 = 0;
+	if cc r2 = r5;                  /* the slot below */
+	cc = r1 == 0;
+	if cc r0 = r4;                  /* row 0: the row above is itself */
+	cc = r1 == r3;
+	if cc r2 = r4;                  /* row h - 1: the row below is itself */
+	r3 = [fp + N_W4];
+	r0 *= r3;
+	r0 = r0 + r6;
+	i0 = r0;
+	r2 *= r3;
+	r2 = r2 + r6;
+	i1 = r2;
+	r4 *= r3;
+	r4 = r4 + r6;
+	i2 = r4;
+	/* coefficient row */
+	r0 = [fp + N_KC];
+	r1 = [fp + N_CP];
+	r0 *= r1;
+	r1 = [fp + N_CR];
+	r0 = r0 + r1;
+	i3 = r0;
+	r0 = r0 + r3;
+	p0 = r0;
+	/* output row: level L's into the output ring, the others into their own */
+	r0 = [fp + N_K];
+	r1 = [fp + N_L];
+	cc = r0 == r1;
+	if !cc jump .Ln_outk;
+	r0 = [fp + N_T];
+	r1 = 1;
+	r0 = r0 & r1;
+	r0 *= r3;
+	r1 = [fp + N_RO];
+	r0 = r0 + r1;
+	jump .Ln_row;
+.Ln_outk:
+	r0 = [fp + N_K3];
+	r0 *= r3;
+	r1 = [fp + N_OUT];
+	r0 = r0 + r1;
+.Ln_row:
+	p1 = r0;
+	p2 = [fp + N_ROT];
+	p3 = [fp + N_FN];
+	call (p3);
+.Ln_lnext:
+	r0 = [fp + N_R];
+	r0 += -1;
+	[fp + N_R] = r0;
+	r0 = [fp + N_K3];
+	r0 += -1;
+	cc = r0 < 0;
+	r1 = 2;
+	if cc r0 = r1;
+	[fp + N_K3] = r0;
+	r0 = [fp + N_KC];
+	r0 += -1;
+	cc = r0 < 0;
+	r1 = [fp + N_L];
+	if cc r0 = r1;
+	[fp + N_KC] = r0;
+	r0 = [fp + N_OUT];
+	[fp + N_IN] = r0;
+	r1 = [fp + N_W12];
+	r0 = r0 + r1;
+	[fp + N_OUT] = r0;
+	r0 = [fp + N_K];
+	r0 += 1;
+	[fp + N_K] = r0;
+	r1 = [fp + N_L];
+	cc = r0 <= r1;
+	if cc jump .Ln_level;
+.Ln_next:
+	/* the next step: t + 1, the slots on */
+	r0 = [fp + N_S3];
+	r0 += 1;
+	r1 = 3;
+	cc = r0 == r1;
+	r1 = 0;
+	if cc r0 = r1;
+	[fp + N_S3] = r0;
+	r0 = [fp + N_F4];
+	r0 += 1;
+	r1 = 3;
+	r0 = r0 & r1;
+	[fp + N_F4] = r0;
+	r0 = [fp + N_CF];
+	r0 += 1;
+	r1 = [fp + N_L];
+	cc = r1 < r0;
+	r1 = 0;
+	if cc r0 = r1;
+	[fp + N_CF] = r0;
+	r0 = [fp + N_T];
+	r1 = [fp + N_TEND];
+	cc = r0 == r1;
+	r0 += 1;
+	[fp + N_T] = r0;
+	if cc jump .Ln_pass_end;
+	jump.l .Ln_step;
+.Ln_pass_end:
+	r1 = [fp + N_DMA];
+	cc = r1 == 0;
+	if cc jump .Ln_waited;
+	call _bvb_dma_wait;
+.Ln_waited:
+	/* the next pass reads uv_out and writes it in place (each input row arrives in L1 before
+	 * the output row that replaces it leaves) */
+	r0 = [fp + 48];
+	[fp + N_SRC] = r0;
+	r0 = [fp + 52];
+	[fp + N_SS] = r0;
+	r0 = [fp + N_LEFT];
+	r1 = [fp + N_L];
+	r0 = r0 - r1;
+	[fp + N_LEFT] = r0;
+	cc = r0 <= 0;
+	if cc jump .Ln_ret;
+	jump.l .Ln_pass;
+.Ln_ret:
+	unlink;
+	(r7:4, p5:3) = [sp++];
+	rts;
+
+/* Runs slots 0 .. R2-1 of the step's job (level 0's row, the coefficient row, the output row):
+ * started on the DMA (the slots re-addressed) or copied by the core at once. */
+.Ln_job:
+	[--sp] = rets;
+	r7 = r2;
+	r0 = [fp + N_DMA];
+	cc = r0 == 0;
+	if cc jump .Ln_job_core;
+	r0 = fp;
+	r1 = N_JOB (x);
+	r0 = r0 + r1;
+	r1 = 0;
+	r2 = fp;
+	r3 = N_X0 (x);
+	r2 = r2 + r3;
+	call _bvb_dma_move;
+	cc = r7 < 2;
+	if cc jump .Ln_job_start;
+	r0 = fp;
+	r1 = N_JOB (x);
+	r0 = r0 + r1;
+	r1 = 1;
+	r2 = fp;
+	r3 = N_X1 (x);
+	r2 = r2 + r3;
+	call _bvb_dma_move;
+	cc = r7 < 3;
+	if cc jump .Ln_job_start;
+	r0 = fp;
+	r1 = N_JOB (x);
+	r0 = r0 + r1;
+	r1 = 2;
+	r2 = fp;
+	r3 = N_X2 (x);
+	r2 = r2 + r3;
+	call _bvb_dma_move;
+.Ln_job_start:
+	r0 = fp;
+	r1 = N_JOB (x);
+	r0 = r0 + r1;
+	r1 = r7;
+	call _bvb_dma_start;
+	rets = [sp++];
+	rts;
+.Ln_job_core:
+	p0 = [fp + N_X0 + DMAX_SRC];
+	p1 = [fp + N_X0 + DMAX_DST];
+	p2 = [fp + N_X0 + DMAX_W];
+	call .Ln_copy;
+	cc = r7 < 2;
+	if cc jump .Ln_job_done;
+	p0 = [fp + N_X1 + DMAX_SRC];
+	p1 = [fp + N_X1 + DMAX_DST];
+	p2 = [fp + N_X1 + DMAX_W];
+	call .Ln_copy;
+	cc = r7 < 3;
+	if cc jump .Ln_job_done;
+	p0 = [fp + N_X2 + DMAX_SRC];
+	p1 = [fp + N_X2 + DMAX_DST];
+	p2 = [fp + N_X2 + DMAX_W];
+	call .Ln_copy;
+.Ln_job_done:
+	rets = [sp++];
+	rts;
+
+/* P2 bytes (a multiple of 4) from P0 to P1, a word at a time. */
+.Ln_copy:
+	p2 = p2 >> 2;
+	lsetup (.Ln_cp, .Ln_cp_end) lc0 = p2;
+.Ln_cp:
+	r0 = [p0++];
+.Ln_cp_end:
+	[p1++] = r0;
+	rts;
+	.size _bvb_hs_iterate_n_asm, . - _bvb_hs_iterate_n_asm
+
 /* ---------------------------------------------------------------------------------------------
  * bvb_hs_prepare_asm(i1, i2, width, height, stride, alpha2_q4, coef)
  * --------------------------------------------------------------------------------------------- */

@@ -155,6 +155,25 @@ extern "C" {
 #define BVB_HS_PREPARE_SCRATCH_BYTES(w)                                                      \
   (BVB_STREAM_SCRATCH_BYTES((w), (w), 2 * BVB_HS_COEF_PITCH(w)) + 8 * (w))
 
+/* FUSED ITERATIONS (bvb_hs_iterate_n_asm). Iteration level k of row y needs level k-1 of rows
+ * y-1..y+1 and coefficient row y, so L levels run one pass down the frame, level k one row behind
+ * level k-1: at step t level k makes row t-k+1. Each level 1..L-1 keeps a ring of 3 rows, the
+ * input (level 0) a ring of 4 (3 read, 1 arriving), the output 2 (1 written, 1 leaving), the
+ * coefficients L+1 (L read, 1 arriving): 12 (L+1) width bytes of flow rows and (L+1) coefficient
+ * rows. A pass moves 14 bytes a pixel through SDRAM once for its L iterations (28 / L cycles a
+ * pixel an iteration at 0.5 byte a cycle). L is the most levels (at most 8) whose flow rows fit
+ * BVB_HS_ITER_L1_BUDGET (20 KB, with the coefficient rows, 10 KB at most, in the other bank):
+ * 8 at 160 wide, 4 at 320, 1 at 640. n iterations take ceil(n / L) passes of as equal a number
+ * of levels as they can (10 at 320 wide: 4, 3, 3). */
+#define BVB_HS_ITER_L1_BUDGET 20480
+#define BVB_HS_ITER_MAX_LEVELS 8
+#define BVB_HS_ITER_LEVELS(w)                                                                \
+  (BVB_HS_ITER_L1_BUDGET / (12 * (w)) - 1 > BVB_HS_ITER_MAX_LEVELS ? BVB_HS_ITER_MAX_LEVELS  \
+   : BVB_HS_ITER_L1_BUDGET / (12 * (w)) - 1 < 1                    ? 1                       \
+                                                                   : BVB_HS_ITER_L1_BUDGET / (12 * (w)) - 1)
+#define BVB_HS_ITER_FLOW_SCRATCH_BYTES(w) (12 * (w) * (BVB_HS_ITER_LEVELS(w) + 1))
+#define BVB_HS_ITER_COEF_SCRATCH_BYTES(w) (2 * BVB_HS_COEF_PITCH(w) * (BVB_HS_ITER_LEVELS(w) + 1))
+
 /* rsqrt mantissas used by prepare (1536 bytes; the assembly reads the same table). */
 extern const int16_t bvb_hs_rsqrt_table[BVB_HS_RSQRT_ENTRIES];
 
@@ -176,6 +195,21 @@ void bvb_hs_iterate_c(const int16_t *coef, const int16_t *uv_in, int32_t in_stri
                       int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height);
 void bvb_hs_iterate_asm(const int16_t *coef, const int16_t *uv_in, int32_t in_stride,
                         int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height);
+
+/* `iterations` (>= 1; fewer: nothing is written) Jacobi iterations uv_in -> uv_out, exactly
+ * those of as many bvb_hs_iterate calls ping-ponging two buffers (uv_in is left as it was).
+ * The assembly fuses them (FUSED ITERATIONS below): up to BVB_HS_ITER_LEVELS(width) in one pass
+ * down the frame, the intermediate rows in flow_scratch, the coefficient rows in coef_scratch.
+ * flow_scratch: BVB_HS_ITER_FLOW_SCRATCH_BYTES(width) bytes, coef_scratch:
+ * BVB_HS_ITER_COEF_SCRATCH_BYTES(width) bytes, both 4-byte aligned (the C reference uses two
+ * rows of flow_scratch). With the frames in SDRAM and the scratches in DMA-reachable L1 the rows
+ * move by memory DMA, double-buffered; elsewhere the core copies them. */
+void bvb_hs_iterate_n_c(const int16_t *coef, const int16_t *uv_in, int32_t in_stride,
+                        int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height,
+                        int32_t iterations, void *flow_scratch, void *coef_scratch);
+void bvb_hs_iterate_n_asm(const int16_t *coef, const int16_t *uv_in, int32_t in_stride,
+                          int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height,
+                          int32_t iterations, void *flow_scratch, void *coef_scratch);
 
 /* Prepare plus `iterations` (>= 0) iterations from zero flow; the result is in uv_out.
  * scratch: BVB_HS_SCRATCH_BYTES(width, height) bytes, 4-byte aligned. */
