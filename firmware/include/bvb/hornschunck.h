@@ -80,12 +80,15 @@
  *   flow out), 8 during prepare (2 frame + 6 coefficients). 160x120: 263 KB, more than the 64 KB
  *   of L1 data, so whole frames live in SDRAM at every size; L1 holds row bands streamed by DMA:
  *   one iteration needs 3 input flow rows + 1 coefficient row + 1 output row = 22 bytes x width
- *   (3.5 KB at 160, 14 KB at 640; twice that double-buffered). Doing all N iterations in one
- *   pass down the frame (iteration n works 1 row behind iteration n-1) needs about
- *   18 x width x N bytes: 29 KB at 160x120 with N = 10, which fits L1 and leaves only the frames
- *   and the final flow in SDRAM. bvb_hs_prepare_asm streams its rows so (the frames' rows in,
- *   the coefficient rows out, through BVB_HS_PREPARE_SCRATCH_BYTES of L1); the iterations do not
- *   yet.
+ *   (3.5 KB at 160, 14 KB at 640; twice that double-buffered), and alone it is bus-bound: 14
+ *   bytes a pixel at 0.5 byte a cycle is 28 cycles, against 10 of compute. Doing L iterations in
+ *   one pass down the frame (level k works 1 row behind level k-1) needs 18 (L + 1) width bytes
+ *   (FUSED ITERATIONS above: bvb_hs_iterate_n_asm, 12 (L + 1) width of flow rows, (L + 1)
+ *   coefficient rows) and moves the 14 bytes once for the L: 28 / L cycles an iteration, under
+ *   the compute from L = 3. bvb_hs_prepare_asm streams its rows too (the frames' rows in, the
+ *   coefficient rows out, through BVB_HS_PREPARE_SCRATCH_BYTES of L1); bvb_hs_iterate_asm (one
+ *   iteration) and bvb_hornschunck_asm (whose one scratch holds frame-sized buffers) read and
+ *   write the frames where they are.
  *
  * ASSEMBLY PLAN (BF537; one 32-bit ALU/MAC instruction per cycle plus two loads or one load and
  *   one store in parallel; counts are issue slots per pixel, loads ride in the parallel slots).
