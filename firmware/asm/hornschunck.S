@@ -108,9 +108,9 @@
 	R3.L = R3.L + R3.H (S);
 .endm
 
-/* The rows of one call, for (width - 2) mod 3 == m: pixel 0 leaves c(0), c(1) in x0, x1, the
- * registers the first rotation step after it expects. */
-.macro HS_ROWS m, x0, x1
+/* The rows of one call, for (width - 2) mod 3 == m: each row is the row routine HS_ROW1 m
+ * (below; one copy of the row code serves this kernel and bvb_hs_iterate_n_asm). */
+.macro HS_ROWS m
 	lsetup (.Lit_row\m, .Lit_row_end\m) lc1;
 .Lit_row\m:
 	i0 = b2;
@@ -124,52 +124,7 @@
 	i3 = p4;
 	p0 = p4 + fp;
 	p1 = p5;
-	/* Pixel 0: left neighbours are the pixel itself. */
-	mnop || r0 = [i0++] || r1 = [i1++];
-	\x0 = r0 +|+ r1 (s) || r0 = [i0++] || r1 = [i1++];
-	\x1 = r0 +|+ r1 (s) || r0 = [i2 ++ m2];
-	a1 = \x0\().h * r7.l, a0 = \x0\().l * r7.l || r1 = [i2 ++ m1];
-	r2 = r0 +|+ r1 (s) || r1 = w[p0++] (x) || r0 = [i3++];
-	a1 += \x1\().h * r7.l, a0 += \x1\().l * r7.l;
-	a1 += r2.h * r7.h, a0 += r2.l * r7.h;
-	r3.h = (a1 += \x0\().h * r7.h), r3.l = (a0 += \x0\().l * r7.h);
-	r3.h = r3.h * r0.h, r3.l = r3.l * r0.l (s2rnd);
-	r3.l = r3.l + r3.h (s);
-	r3.l = r3.l + r1.l (s) || r2 = [i0++];           /* T(2), for pixel 1 */
-.if \m == 1
-	HS_PIX r6, r4, r5
-	r3.l = r3.l + r1.l (s);
-.endif
-.if \m == 2
-	HS_PIX r5, r6, r4
-	r3.l = r3.l + r1.l (s);
-	HS_PIX r6, r4, r5
-	r3.l = r3.l + r1.l (s);
-.endif
-	cc = p2 == 0;
-	if cc jump .Lit_last\m;
-	lsetup (.Lit_pix\m, .Lit_pix_end\m) lc0 = p2;
-.Lit_pix\m:
-	HS_PIX r4, r5, r6
-	r3.l = r3.l + r1.l (s);
-	HS_PIX r5, r6, r4
-	r3.l = r3.l + r1.l (s);
-	HS_PIX r6, r4, r5
-.Lit_pix_end\m:
-	r3.l = r3.l + r1.l (s);
-.Lit_last\m:
-	/* Pixel width-1: cl = R4, c0 = R5 and cr = c0. */
-	r3.h = (a1 -= r3.l * r0.h), r3.l = (a0 -= r3.l * r0.l) (ih) || r0 = [i2 ++ m2];
-	a1 = r4.h * r7.l, a0 = r4.l * r7.l || [p1++] = r3 || r1 = [i2];
-	r2 = r0 +|+ r1 (s) || r1 = w[p0++] (x) || r0 = [i3++];
-	a1 += r5.h * r7.l, a0 += r5.l * r7.l;
-	a1 += r2.h * r7.h, a0 += r2.l * r7.h;
-	r3.h = (a1 += r5.h * r7.h), r3.l = (a0 += r5.l * r7.h);
-	r3.h = r3.h * r0.h, r3.l = r3.l * r0.l (s2rnd);
-	r3.l = r3.l + r3.h (s);
-	r3.l = r3.l + r1.l (s);
-	r3.h = (a1 -= r3.l * r0.h), r3.l = (a0 -= r3.l * r0.l) (ih);
-	[p1] = r3;
+	call .Lrow1_\m;
 	/* Next row: top = this row, then advance the three row pointers. */
 	b2 = p3;
 	r0 = p3;
@@ -187,90 +142,12 @@
 	p5 = r0;
 .endm
 
-	.section .l1.text, "ax"
-	.align 4
-	.global _bvb_hs_iterate_asm
-	.type _bvb_hs_iterate_asm, STT_FUNC
-_bvb_hs_iterate_asm:
-	[--sp] = (r7:4, p5:3);
-	[--sp] = fp;
-	/* Arguments 4-7 sit 32 bytes further up after the saves. */
-	p4 = r0;
-	p3 = r1;
-	b0 = r2;
-	b2 = r1;
-	p5 = [sp + 44];
-	r0 = [sp + 48];
-	b1 = r0;
-	r6 = [sp + 52];
-	r5 = [sp + 56];
-	lc1 = r5;
-	r0 = r5;
-	r0 += -1;
-	r0 *= r2;
-	r0 = r0 + r1;
-	b3 = r0;
-	r0 = r6 << 2;
-	fp = r0;
-	r1 = r6 << 1;
-	r0 = r0 + r1;
-	r1 = 1;
-	r1 = r1 & r6;
-	r1 = r1 << 1;
-	r0 = r0 + r1;
-	m3 = r0;
-	/* n = (width - 2) / 3 rotations of the loop, m = (width - 2) mod 3 pixels before it. */
-	r0 = r6;
-	r0 += -2;
-	r1.l = 0xaaab;
-	r1.h = 0;
-	r2 = r0;
-	r2 *= r1;
-	r2 >>= 17;
-	p2 = r2;
-	r1 = r2 << 1;
-	r1 = r1 + r2;
-	r0 = r0 - r1;
-	r1 = 8;
-	m0 = r1;
-	r1 = -4;
-	m1 = r1;
-	r1 = 4;
-	m2 = r1;
-	r7.l = 2731;
-	r7.h = 5461;
-	cc = r0 == 0;
-	if cc jump .Lit_m0;
-	cc = r0 == 1;
-	if cc jump .Lit_m1;
-	HS_ROWS 2, r5, r6
-	jump .Lit_done;
-.Lit_m1:
-	HS_ROWS 1, r6, r4
-	jump .Lit_done;
-.Lit_m0:
-	HS_ROWS 0, r4, r5
-.Lit_done:
-	fp = [sp++];
-	(r7:4, p5:3) = [sp++];
-	rts;
-	.size _bvb_hs_iterate_asm, . - _bvb_hs_iterate_asm
-
-#include "bvb/dma.h"
-
-/* ---------------------------------------------------------------------------------------------
- * bvb_hs_iterate_n_asm(coef, uv_in, in_stride, uv_out, out_stride, width, height, iterations,
- *                      flow_scratch, coef_scratch): the iterations fused, L levels a pass
- *                      (bvb/hornschunck.h: FUSED ITERATIONS)
- * --------------------------------------------------------------------------------------------- */
-
-/* One output row, as a subroutine (the row body of HS_ROWS): I0 = row above (T), I1 = row below
+/* One output row, as a subroutine (for HS_ROWS and bvb_hs_iterate_n_asm): I0 = row above (T), I1 = row below
  * (B), I2 = the row (M), I3 = its (gy':gx') words, P0 = its gt' halves, P1 = the output row,
  * P2 = (width - 2) / 3; the variant m = (width - 2) mod 3. Clobbers R0-R7, A0, A1, I0-I3,
  * M0-M2, P0-P2, LC0, ASTAT. T is read one word past its row (unused): the rings' layout puts
  * another row there. */
 .macro HS_ROW1 m, x0, x1
-	.align 4
 .Lrow1_\m:
 	r7.l = 2731;
 	r7.h = 5461;
@@ -313,6 +190,11 @@ _bvb_hs_iterate_asm:
 .Lr1_pix_end\m:
 	r3.l = r3.l + r1.l (s);
 .Lr1_last\m:
+.if \m < 2
+	jump .Lr1_tail;            /* the last pixel's code is the same in all three */
+.else
+.Lr1_tail:
+	/* Pixel width-1: cl = R4, c0 = R5 and cr = c0. */
 	r3.h = (a1 -= r3.l * r0.h), r3.l = (a0 -= r3.l * r0.l) (ih) || r0 = [i2 ++ m2];
 	a1 = r4.h * r7.l, a0 = r4.l * r7.l || [p1++] = r3 || r1 = [i2];
 	r2 = r0 +|+ r1 (s) || r1 = w[p0++] (x) || r0 = [i3++];
@@ -325,7 +207,83 @@ _bvb_hs_iterate_asm:
 	r3.h = (a1 -= r3.l * r0.h), r3.l = (a0 -= r3.l * r0.l) (ih);
 	[p1] = r3;
 	rts;
+.endif
 .endm
+
+	.section .l1.text, "ax"
+	HS_ROW1 0, r4, r5
+	HS_ROW1 1, r6, r4
+	HS_ROW1 2, r5, r6
+
+	.align 4
+	.global _bvb_hs_iterate_asm
+	.type _bvb_hs_iterate_asm, STT_FUNC
+_bvb_hs_iterate_asm:
+	[--sp] = (r7:4, p5:3);
+	[--sp] = fp;
+	[--sp] = rets;                  /* the rows are calls */
+	/* Arguments 4-7 sit 36 bytes further up after the saves. */
+	p4 = r0;
+	p3 = r1;
+	b0 = r2;
+	b2 = r1;
+	p5 = [sp + 48];
+	r0 = [sp + 52];
+	b1 = r0;
+	r6 = [sp + 56];
+	r5 = [sp + 60];
+	lc1 = r5;
+	r0 = r5;
+	r0 += -1;
+	r0 *= r2;
+	r0 = r0 + r1;
+	b3 = r0;
+	r0 = r6 << 2;
+	fp = r0;
+	r1 = r6 << 1;
+	r0 = r0 + r1;
+	r1 = 1;
+	r1 = r1 & r6;
+	r1 = r1 << 1;
+	r0 = r0 + r1;
+	m3 = r0;
+	/* n = (width - 2) / 3 rotations of the loop, m = (width - 2) mod 3 pixels before it. */
+	r0 = r6;
+	r0 += -2;
+	r1 = 0xaaab (z);
+	r2 = r0;
+	r2 *= r1;
+	r2 >>= 17;
+	p2 = r2;
+	r1 = r2 << 1;
+	r1 = r1 + r2;
+	r0 = r0 - r1;
+	cc = r0 == 0;
+	if cc jump .Lit_m0;
+	cc = r0 == 1;
+	if cc jump .Lit_m1;
+	HS_ROWS 2
+	jump .Lit_done;
+.Lit_m1:
+	HS_ROWS 1
+	jump .Lit_done;
+.Lit_m0:
+	HS_ROWS 0
+.Lit_done:
+	rets = [sp++];
+	fp = [sp++];
+	(r7:4, p5:3) = [sp++];
+	rts;
+	.size _bvb_hs_iterate_asm, . - _bvb_hs_iterate_asm
+
+#include "bvb/dma.h"
+
+/* ---------------------------------------------------------------------------------------------
+ * bvb_hs_iterate_n_asm(coef, uv_in, in_stride, uv_out, out_stride, width, height, iterations,
+ *                      flow_scratch, coef_scratch): the iterations fused, L levels a pass
+ *                      (bvb/hornschunck.h: FUSED ITERATIONS)
+ * --------------------------------------------------------------------------------------------- */
+
 
 /* Stack frame of bvb_hs_iterate_n_asm (FP-relative locals; arguments 4-10 at FP + 48). */
 #define N_COEF  -4    /* the coefficients (a frame) */
@@ -355,16 +313,14 @@ _bvb_hs_iterate_asm:
 #define N_OUT   -100  /* the level's output ring (k < L) */
 #define N_W12   -104  /* 12 width: a ring of 3 rows */
 #define N_TEND  -108  /* the last step, height - 1 + L */
-#define N_X0    -132  /* struct bvb_dma_xfer: level 0's row in */
-#define N_X1    -156  /* the coefficient row in */
-#define N_X2    -180  /* the output row out */
-#define N_JOB   -292  /* the DMA job (BVB_DMA_JOB_BYTES) */
-#define N_FRAME 304   /* locals at FP-292..-1, the C calls' 12 bytes of arguments below */
+#define N_JOBP  -112  /* the addresses of N_JOB and N_X0 */
+#define N_X0P   -116
+#define N_X0    -140  /* struct bvb_dma_xfer: level 0's row in (N_X1, N_X2 24 bytes below) */
+#define N_X1    -164  /* the coefficient row in */
+#define N_X2    -188  /* the output row out */
+#define N_JOB   -300  /* the DMA job (BVB_DMA_JOB_BYTES) */
+#define N_FRAME 312   /* locals at FP-300..-1, the C calls' 12 bytes of arguments below */
 
-	.section .l1.text, "ax"
-	HS_ROW1 0, r4, r5
-	HS_ROW1 1, r6, r4
-	HS_ROW1 2, r5, r6
 
 	.align 4
 	.global _bvb_hs_iterate_n_asm
@@ -375,11 +331,16 @@ _bvb_hs_iterate_n_asm:
 	[fp + N_COEF] = r0;
 	[fp + N_SRC] = r1;
 	[fp + N_SS] = r2;
+	r1 = fp;
+	r3 = N_JOB (x);
+	r3 = r3 + r1;
+	[fp + N_JOBP] = r3;
+	r3 = N_X0 (x);
+	r3 = r3 + r1;
+	[fp + N_X0P] = r3;
 	r0 = [fp + 64];                 /* iterations */
 	cc = r0 <= 0;
-	if !cc jump .Ln_go;
-	jump.l .Ln_ret;
-.Ln_go:
+	if cc jump .Ln_ret;
 	[fp + N_LEFT] = r0;
 	r6 = [fp + 56];                 /* width */
 	r0 = r6 << 2;
@@ -396,8 +357,7 @@ _bvb_hs_iterate_n_asm:
 	[fp + N_CP] = r0;               /* 2 BVB_HS_COEF_PITCH */
 	r0 = r6;
 	r0 += -2;
-	r1.l = 0xaaab;
-	r1.h = 0;
+	r1 = 0xaaab (z);
 	r2 = r0;
 	r2 *= r1;
 	r2 >>= 17;
@@ -419,8 +379,7 @@ _bvb_hs_iterate_n_asm:
 	/* the most levels whose flow rows, 12 width (L + 1) bytes, fit BVB_HS_ITER_L1_BUDGET */
 	r0 = 8;
 	r1 = [fp + N_W12];
-	r2.l = 20480;
-	r2.h = 0;
+	r2 = 20480 (x);
 .Ln_lmax:
 	cc = r0 == 1;
 	if cc jump .Ln_lmax_done;
@@ -476,13 +435,17 @@ _bvb_hs_iterate_n_asm:
 	r0 += -1;
 	r0 = r0 + r4;
 	[fp + N_TEND] = r0;
-	/* the three transfers, at their first rows */
-	r0 = [fp + N_SRC];
-	[fp + N_X0 + DMAX_SRC] = r0;
+	/* the step counters at t = -2 */
+	r0 = -2;
+	[fp + N_T] = r0;
+	r0 = 1;
+	[fp + N_S3] = r0;
+	r0 = 0;
+	[fp + N_F4] = r0;
+	[fp + N_CF] = r4;
+	/* the three transfers: their shapes, and the addresses of step -2 */
 	r0 = [fp + N_SS];
 	[fp + N_X0 + DMAX_SS] = r0;
-	r0 = [fp + N_R0];
-	[fp + N_X0 + DMAX_DST] = r0;
 	r0 = [fp + N_W4];
 	[fp + N_X0 + DMAX_DS] = r0;
 	[fp + N_X0 + DMAX_W] = r0;
@@ -492,137 +455,43 @@ _bvb_hs_iterate_n_asm:
 	[fp + N_X2 + DMAX_W] = r0;
 	[fp + N_X2 + DMAX_ROWS] = r1;
 	[fp + N_X1 + DMAX_ROWS] = r1;
-	r0 = [fp + N_RO];
-	[fp + N_X2 + DMAX_SRC] = r0;
-	r0 = [fp + 48];
-	[fp + N_X2 + DMAX_DST] = r0;
 	r0 = [fp + 52];
 	[fp + N_X2 + DMAX_DS] = r0;
-	r0 = [fp + N_COEF];
-	[fp + N_X1 + DMAX_SRC] = r0;
-	r0 = [fp + N_CR];
-	[fp + N_X1 + DMAX_DST] = r0;
 	r0 = [fp + N_CP];
 	[fp + N_X1 + DMAX_SS] = r0;
 	[fp + N_X1 + DMAX_DS] = r0;
 	[fp + N_X1 + DMAX_W] = r0;
+	call .Ln_addr;
 	/* DMA when it takes all three (every buffer where it reaches), else the core copies */
+	r6 = 0;
+	r5 = [fp + N_X0P];
+.Ln_prep:
+	r0 = [fp + N_JOBP];
+	r1 = r6;
+	r2 = r5;
+	call _bvb_dma_prepare;
 	r7 = 0;
-	r0 = fp;
-	r1 = N_JOB (x);
-	r0 = r0 + r1;
-	r1 = 0;
-	r2 = fp;
-	r3 = N_X0 (x);
-	r2 = r2 + r3;
-	call _bvb_dma_prepare;
 	cc = r0 == 0;
 	if !cc jump .Ln_mode;
-	r0 = fp;
-	r1 = N_JOB (x);
-	r0 = r0 + r1;
-	r1 = 1;
-	r2 = fp;
-	r3 = N_X1 (x);
-	r2 = r2 + r3;
-	call _bvb_dma_prepare;
-	cc = r0 == 0;
-	if !cc jump .Ln_mode;
-	r0 = fp;
-	r1 = N_JOB (x);
-	r0 = r0 + r1;
-	r1 = 2;
-	r2 = fp;
-	r3 = N_X2 (x);
-	r2 = r2 + r3;
-	call _bvb_dma_prepare;
-	cc = r0 == 0;
-	if !cc jump .Ln_mode;
+	r5 += -24;
+	r6 += 1;
 	r7 = 1;
+	cc = r6 < 3;
+	if cc jump .Ln_prep;
 .Ln_mode:
 	[fp + N_DMA] = r7;
-	r0 = -2;
-	[fp + N_T] = r0;
-	r0 = 1;
-	[fp + N_S3] = r0;
-	r0 = 0;
-	[fp + N_F4] = r0;
-	r0 = [fp + N_L];
-	[fp + N_CF] = r0;
 
 .Ln_step:
 	/* wait for the job of the step before */
 	r0 = [fp + N_T];
-	r1 = -2;
-	cc = r0 == r1;
+	cc = r0 < -1;
 	if cc jump .Ln_nowait;
 	r1 = [fp + N_DMA];
 	cc = r1 == 0;
 	if cc jump .Ln_nowait;
 	call _bvb_dma_wait;
 .Ln_nowait:
-	/* this step's job: level 0's row t + 2 in (row h - 1 past the end: a slot no one reads),
-	 * coefficient row t + 1 in (t >= -1), output row t - L out (t >= L) */
-	r2 = [fp + 60];
-	r2 += -1;
-	r3 = 0;
-	r0 = [fp + N_T];
-	r0 += 2;
-	r0 = min (r0, r2);
-	r1 = [fp + N_SS];
-	r0 *= r1;
-	r1 = [fp + N_SRC];
-	r0 = r0 + r1;
-	[fp + N_X0 + DMAX_SRC] = r0;
-	r0 = [fp + N_F4];
-	r1 = [fp + N_W4];
-	r0 *= r1;
-	r1 = [fp + N_R0];
-	r0 = r0 + r1;
-	[fp + N_X0 + DMAX_DST] = r0;
-	r0 = [fp + N_T];
-	r0 += 1;
-	r0 = min (r0, r2);
-	r0 = max (r0, r3);
-	r1 = [fp + N_CP];
-	r0 *= r1;
-	r1 = [fp + N_COEF];
-	r0 = r0 + r1;
-	[fp + N_X1 + DMAX_SRC] = r0;
-	r0 = [fp + N_CF];
-	r1 = [fp + N_CP];
-	r0 *= r1;
-	r1 = [fp + N_CR];
-	r0 = r0 + r1;
-	[fp + N_X1 + DMAX_DST] = r0;
-	r0 = [fp + N_T];
-	r0 += -1;
-	r1 = 1;
-	r0 = r0 & r1;
-	r1 = [fp + N_W4];
-	r0 *= r1;
-	r1 = [fp + N_RO];
-	r0 = r0 + r1;
-	[fp + N_X2 + DMAX_SRC] = r0;
-	r0 = [fp + N_T];
-	r1 = [fp + N_L];
-	r0 = r0 - r1;
-	r0 = max (r0, r3);
-	r1 = [fp + 52];
-	r0 *= r1;
-	r1 = [fp + 48];
-	r0 = r0 + r1;
-	[fp + N_X2 + DMAX_DST] = r0;
-	r0 = [fp + N_T];
-	r1 = [fp + N_L];
-	r2 = 3;
-	r3 = 2;
-	cc = r0 < r1;
-	if cc r2 = r3;
-	r3 = -2;
-	cc = r0 == r3;
-	r3 = 1;
-	if cc r2 = r3;
+	call .Ln_addr;
 	call .Ln_job;
 
 	/* the levels: level k makes row t - k + 1 where that is a row */
@@ -755,8 +624,7 @@ _bvb_hs_iterate_n_asm:
 	/* the next step: t + 1, the slots on */
 	r0 = [fp + N_S3];
 	r0 += 1;
-	r1 = 3;
-	cc = r0 == r1;
+	cc = r0 == 3;
 	r1 = 0;
 	if cc r0 = r1;
 	[fp + N_S3] = r0;
@@ -778,7 +646,7 @@ _bvb_hs_iterate_n_asm:
 	r0 += 1;
 	[fp + N_T] = r0;
 	if cc jump .Ln_pass_end;
-	jump.l .Ln_step;
+	jump.s .Ln_step;
 .Ln_pass_end:
 	r1 = [fp + N_DMA];
 	cc = r1 == 0;
@@ -797,10 +665,74 @@ _bvb_hs_iterate_n_asm:
 	[fp + N_LEFT] = r0;
 	cc = r0 <= 0;
 	if cc jump .Ln_ret;
-	jump.l .Ln_pass;
+	jump.s .Ln_pass;
 .Ln_ret:
 	unlink;
 	(r7:4, p5:3) = [sp++];
+	rts;
+
+/* The step's job (R2 = its slots, 1 to 3): level 0's row t + 2 in (row h - 1 past the end: a slot no one reads),
+   * coefficient row t + 1 in (t >= -1), output row t - L out (t >= L) */
+.Ln_addr:
+	r2 = [fp + 60];
+	r2 += -1;
+	r3 = 0;
+	r0 = [fp + N_T];
+	r0 += 2;
+	r0 = min (r0, r2);
+	r1 = [fp + N_SS];
+	r0 *= r1;
+	r1 = [fp + N_SRC];
+	r0 = r0 + r1;
+	[fp + N_X0 + DMAX_SRC] = r0;
+	r0 = [fp + N_F4];
+	r1 = [fp + N_W4];
+	r0 *= r1;
+	r1 = [fp + N_R0];
+	r0 = r0 + r1;
+	[fp + N_X0 + DMAX_DST] = r0;
+	r0 = [fp + N_T];
+	r0 += 1;
+	r0 = min (r0, r2);
+	r0 = max (r0, r3);
+	r1 = [fp + N_CP];
+	r0 *= r1;
+	r1 = [fp + N_COEF];
+	r0 = r0 + r1;
+	[fp + N_X1 + DMAX_SRC] = r0;
+	r0 = [fp + N_CF];
+	r1 = [fp + N_CP];
+	r0 *= r1;
+	r1 = [fp + N_CR];
+	r0 = r0 + r1;
+	[fp + N_X1 + DMAX_DST] = r0;
+	r0 = [fp + N_T];
+	r0 += -1;
+	r1 = 1;
+	r0 = r0 & r1;
+	r1 = [fp + N_W4];
+	r0 *= r1;
+	r1 = [fp + N_RO];
+	r0 = r0 + r1;
+	[fp + N_X2 + DMAX_SRC] = r0;
+	r0 = [fp + N_T];
+	r1 = [fp + N_L];
+	r0 = r0 - r1;
+	r0 = max (r0, r3);
+	r1 = [fp + 52];
+	r0 *= r1;
+	r1 = [fp + 48];
+	r0 = r0 + r1;
+	[fp + N_X2 + DMAX_DST] = r0;
+	r0 = [fp + N_T];
+	r1 = [fp + N_L];
+	r2 = 3;
+	r3 = 2;
+	cc = r0 < r1;
+	if cc r2 = r3;
+	cc = r0 < -1;
+	r3 = 1;
+	if cc r2 = r3;
 	rts;
 
 /* Runs slots 0 .. R2-1 of the step's job (level 0's row, the coefficient row, the output row):
@@ -808,74 +740,42 @@ _bvb_hs_iterate_n_asm:
 .Ln_job:
 	[--sp] = rets;
 	r7 = r2;
+	r6 = 0;
+	r5 = [fp + N_X0P];
 	r0 = [fp + N_DMA];
 	cc = r0 == 0;
 	if cc jump .Ln_job_core;
-	r0 = fp;
-	r1 = N_JOB (x);
-	r0 = r0 + r1;
-	r1 = 0;
-	r2 = fp;
-	r3 = N_X0 (x);
-	r2 = r2 + r3;
+.Ln_job_move:
+	r0 = [fp + N_JOBP];
+	r1 = r6;
+	r2 = r5;
 	call _bvb_dma_move;
-	cc = r7 < 2;
-	if cc jump .Ln_job_start;
-	r0 = fp;
-	r1 = N_JOB (x);
-	r0 = r0 + r1;
-	r1 = 1;
-	r2 = fp;
-	r3 = N_X1 (x);
-	r2 = r2 + r3;
-	call _bvb_dma_move;
-	cc = r7 < 3;
-	if cc jump .Ln_job_start;
-	r0 = fp;
-	r1 = N_JOB (x);
-	r0 = r0 + r1;
-	r1 = 2;
-	r2 = fp;
-	r3 = N_X2 (x);
-	r2 = r2 + r3;
-	call _bvb_dma_move;
-.Ln_job_start:
-	r0 = fp;
-	r1 = N_JOB (x);
-	r0 = r0 + r1;
+	r5 += -24;
+	r6 += 1;
+	cc = r6 < r7;
+	if cc jump .Ln_job_move;
+	r0 = [fp + N_JOBP];
 	r1 = r7;
 	call _bvb_dma_start;
 	rets = [sp++];
 	rts;
 .Ln_job_core:
-	p0 = [fp + N_X0 + DMAX_SRC];
-	p1 = [fp + N_X0 + DMAX_DST];
-	p2 = [fp + N_X0 + DMAX_W];
-	call .Ln_copy;
-	cc = r7 < 2;
-	if cc jump .Ln_job_done;
-	p0 = [fp + N_X1 + DMAX_SRC];
-	p1 = [fp + N_X1 + DMAX_DST];
-	p2 = [fp + N_X1 + DMAX_W];
-	call .Ln_copy;
-	cc = r7 < 3;
-	if cc jump .Ln_job_done;
-	p0 = [fp + N_X2 + DMAX_SRC];
-	p1 = [fp + N_X2 + DMAX_DST];
-	p2 = [fp + N_X2 + DMAX_W];
-	call .Ln_copy;
-.Ln_job_done:
-	rets = [sp++];
-	rts;
-
-/* P2 bytes (a multiple of 4) from P0 to P1, a word at a time. */
-.Ln_copy:
+	/* P0, P1, P2 = the transfer's source, destination, width: a word at a time */
+	p2 = r5;
+	p0 = [p2 + DMAX_SRC];
+	p1 = [p2 + DMAX_DST];
+	p2 = [p2 + DMAX_W];
 	p2 = p2 >> 2;
 	lsetup (.Ln_cp, .Ln_cp_end) lc0 = p2;
 .Ln_cp:
 	r0 = [p0++];
 .Ln_cp_end:
 	[p1++] = r0;
+	r5 += -24;
+	r6 += 1;
+	cc = r6 < r7;
+	if cc jump .Ln_job_core;
+	rets = [sp++];
 	rts;
 	.size _bvb_hs_iterate_n_asm, . - _bvb_hs_iterate_n_asm
 
