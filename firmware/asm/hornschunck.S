@@ -142,21 +142,14 @@
 	p5 = r0;
 .endm
 
-/* One output row, as a subroutine (for HS_ROWS and bvb_hs_iterate_n_asm): I0 = row above (T), I1 = row below
- * (B), I2 = the row (M), I3 = its (gy':gx') words, P0 = its gt' halves, P1 = the output row,
- * P2 = (width - 2) / 3; the variant m = (width - 2) mod 3. Clobbers R0-R7, A0, A1, I0-I3,
- * M0-M2, P0-P2, LC0, ASTAT. T is read one word past its row (unused): the rings' layout puts
- * another row there. */
-.macro HS_ROW1 m, x0, x1
-.Lrow1_\m:
-	r7.l = 2731;
-	r7.h = 5461;
-	r1 = 8;
-	m0 = r1;
-	r1 = -4;
-	m1 = r1;
-	r1 = 4;
-	m2 = r1;
+/* One output row, as a subroutine (for HS_ROWS and bvb_hs_iterate_n_asm): I0 = row above (T),
+ * I1 = row below (B), I2 = the row (M), I3 = its (gy':gx') words, P0 = its gt' halves, P1 = the
+ * output row, P2 = (width - 2) / 3, R7 = (W6:W12), M0 = 8, M1 = -4, M2 = 4; entry .Lrow1_m for
+ * m = (width - 2) mod 3. Clobbers R0-R6, A0, A1, I0-I3, P0, P1, LC0, ASTAT. T is read one word
+ * past its row (unused): the callers' layouts put another row there. The three entries differ
+ * in pixel 0's registers and the m pixels before the loop: entry 2's state after its first
+ * pixel is entry 1's after pixel 0, and entry 1's after its pixel entry 0's, so they chain. */
+.macro HS_PIX0 x0, x1
 	mnop || r0 = [i0++] || r1 = [i1++];
 	\x0 = r0 +|+ r1 (s) || r0 = [i0++] || r1 = [i1++];
 	\x1 = r0 +|+ r1 (s) || r0 = [i2 ++ m2];
@@ -168,31 +161,35 @@
 	r3.h = r3.h * r0.h, r3.l = r3.l * r0.l (s2rnd);
 	r3.l = r3.l + r3.h (s);
 	r3.l = r3.l + r1.l (s) || r2 = [i0++];
-.if \m == 1
-	HS_PIX r6, r4, r5
-	r3.l = r3.l + r1.l (s);
-.endif
-.if \m == 2
+.endm
+
+	.section .l1.text, "ax"
+.Lrow1_2:
+	HS_PIX0 r5, r6
 	HS_PIX r5, r6, r4
 	r3.l = r3.l + r1.l (s);
+	jump.s .Lr1_m1;
+.Lrow1_1:
+	HS_PIX0 r6, r4
+.Lr1_m1:
 	HS_PIX r6, r4, r5
 	r3.l = r3.l + r1.l (s);
-.endif
+	jump.s .Lr1_m0;
+.Lrow1_0:
+	HS_PIX0 r4, r5
+.Lr1_m0:
 	cc = p2 == 0;
-	if cc jump .Lr1_last\m;
-	lsetup (.Lr1_pix\m, .Lr1_pix_end\m) lc0 = p2;
-.Lr1_pix\m:
+	if cc jump .Lr1_last0;
+	lsetup (.Lr1_pix0, .Lr1_pix_end0) lc0 = p2;
+.Lr1_pix0:
 	HS_PIX r4, r5, r6
 	r3.l = r3.l + r1.l (s);
 	HS_PIX r5, r6, r4
 	r3.l = r3.l + r1.l (s);
 	HS_PIX r6, r4, r5
-.Lr1_pix_end\m:
+.Lr1_pix_end0:
 	r3.l = r3.l + r1.l (s);
-.Lr1_last\m:
-.if \m < 2
-	jump .Lr1_tail;            /* the last pixel's code is the same in all three */
-.else
+.Lr1_last0:
 .Lr1_tail:
 	/* Pixel width-1: cl = R4, c0 = R5 and cr = c0. */
 	r3.h = (a1 -= r3.l * r0.h), r3.l = (a0 -= r3.l * r0.l) (ih) || r0 = [i2 ++ m2];
@@ -207,13 +204,7 @@
 	r3.h = (a1 -= r3.l * r0.h), r3.l = (a0 -= r3.l * r0.l) (ih);
 	[p1] = r3;
 	rts;
-.endif
-.endm
 
-	.section .l1.text, "ax"
-	HS_ROW1 0, r4, r5
-	HS_ROW1 1, r6, r4
-	HS_ROW1 2, r5, r6
 
 	.align 4
 	.global _bvb_hs_iterate_asm
@@ -258,6 +249,14 @@ _bvb_hs_iterate_asm:
 	r1 = r2 << 1;
 	r1 = r1 + r2;
 	r0 = r0 - r1;
+	r1 = 8;
+	m0 = r1;
+	r1 = -4;
+	m1 = r1;
+	r1 = 4;
+	m2 = r1;
+	r7.l = 2731;
+	r7.h = 5461;
 	cc = r0 == 0;
 	if cc jump .Lit_m0;
 	cc = r0 == 1;
@@ -331,6 +330,12 @@ _bvb_hs_iterate_n_asm:
 	[fp + N_COEF] = r0;
 	[fp + N_SRC] = r1;
 	[fp + N_SS] = r2;
+	r0 = 8;
+	m0 = r0;                        /* the row routine's modifiers (the DMA calls keep them) */
+	r0 = -4;
+	m1 = r0;
+	r0 = 4;
+	m2 = r0;
 	r1 = fp;
 	r3 = N_JOB (x);
 	r3 = r3 + r1;
@@ -495,6 +500,8 @@ _bvb_hs_iterate_n_asm:
 	call .Ln_job;
 
 	/* the levels: level k makes row t - k + 1 where that is a row */
+	r7.l = 2731;
+	r7.h = 5461;
 	r0 = [fp + N_T];
 	cc = r0 < 0;
 	if cc jump .Ln_next;
