@@ -306,19 +306,26 @@ _bvb_hs_iterate_asm:
 #define N_CF    -76   /* the coefficient slot of the row arriving, (t + 1) mod (L + 1) */
 #define N_K     -80   /* the level */
 #define N_R     -84   /* the row it makes, t - k + 1 */
-#define N_K3    -88   /* that row mod 3 */
-#define N_KC    -92   /* that row mod (L + 1) */
-#define N_IN    -96   /* the level's input ring (k >= 2) */
+#define N_CPTR  -88   /* its coefficient row */
+#define N_CWRAP -92   /* the coefficient ring's bytes */
+#define N_IN    -96   /* the level's input ring */
 #define N_OUT   -100  /* the level's output ring (k < L) */
 #define N_W12   -104  /* 12 width: a ring of 3 rows */
 #define N_TEND  -108  /* the last step, height - 1 + L */
 #define N_JOBP  -112  /* the addresses of N_JOB and N_X0 */
 #define N_X0P   -116
-#define N_X0    -140  /* struct bvb_dma_xfer: level 0's row in (N_X1, N_X2 24 bytes below) */
-#define N_X1    -164  /* the coefficient row in */
-#define N_X2    -188  /* the output row out */
-#define N_JOB   -300  /* the DMA job (BVB_DMA_JOB_BYTES) */
-#define N_FRAME 312   /* locals at FP-300..-1, the C calls' 12 bytes of arguments below */
+#define N_OLAST -120  /* level L's output row */
+#define N_OM    -124  /* the slots of the level's row in a 3-row ring: the row */
+#define N_OT    -128  /* above */
+#define N_OB    -132  /* below */
+#define N_IM    -136  /* the slots the level reads (level 1: in level 0's 4-row ring) */
+#define N_IT    -140
+#define N_IB    -144
+#define N_X0    -168  /* struct bvb_dma_xfer: level 0's row in (N_X1, N_X2 24 bytes below) */
+#define N_X1    -192  /* the coefficient row in */
+#define N_X2    -216  /* the output row out */
+#define N_JOB   -328  /* the DMA job (BVB_DMA_JOB_BYTES) */
+#define N_FRAME 340   /* locals at FP-328..-1, the C calls' 12 bytes of arguments below */
 
 
 	.align 4
@@ -436,6 +443,11 @@ _bvb_hs_iterate_n_asm:
 	[fp + N_RO] = r0;
 	r0 = [fp + 72];
 	[fp + N_CR] = r0;
+	r0 = r4;
+	r0 += 1;
+	r1 = [fp + N_CP];
+	r0 *= r1;
+	[fp + N_CWRAP] = r0;
 	r0 = [fp + 60];
 	r0 += -1;
 	r0 = r0 + r4;
@@ -500,8 +512,6 @@ _bvb_hs_iterate_n_asm:
 	call .Ln_job;
 
 	/* the levels: level k makes row t - k + 1 where that is a row */
-	r7.l = 2731;
-	r7.h = 5461;
 	r0 = [fp + N_T];
 	cc = r0 < 0;
 	if cc jump .Ln_next;
@@ -509,18 +519,72 @@ _bvb_hs_iterate_n_asm:
 	cc = r0 == r1;
 	if cc jump .Ln_next;
 	[fp + N_R] = r0;
-	r1 = [fp + N_S3];
-	[fp + N_K3] = r1;
-	r1 = [fp + N_CF];
-	r1 += -1;
-	cc = r1 < 0;
-	r2 = [fp + N_L];
-	if cc r1 = r2;
-	[fp + N_KC] = r1;
+	r7.l = 2731;
+	r7.h = 5461;
+	p2 = [fp + N_ROT];
+	p3 = [fp + N_FN];
+	r3 = [fp + N_W4];
+	/* level L's output row, in the output ring */
 	r1 = 1;
-	[fp + N_K] = r1;
-	r1 = [fp + N_RK];
-	[fp + N_OUT] = r1;
+	r1 = r0 & r1;
+	r1 *= r3;
+	r2 = [fp + N_RO];
+	r1 = r1 + r2;
+	[fp + N_OLAST] = r1;
+	/* row t's slots in a 3-row ring (offsets: the row, above, below); each level after
+	 * the first reads its row's and writes its own into the same slots of its rings, and the
+	 * next level's row is the slot above: the three rotate */
+	r4 = [fp + N_S3];
+	r0 = r4;
+	r0 += -1;
+	cc = r0 < 0;
+	r1 = 2;
+	if cc r0 = r1;
+	r2 = r4;
+	r2 += 1;
+	cc = r2 == 3;
+	r1 = 0;
+	if cc r2 = r1;
+	r4 *= r3;
+	[fp + N_OM] = r4;
+	r0 *= r3;
+	[fp + N_OT] = r0;
+	r2 *= r3;
+	[fp + N_OB] = r2;
+	/* row t's coefficient row */
+	r0 = [fp + N_CF];
+	r0 += -1;
+	cc = r0 < 0;
+	r1 = [fp + N_L];
+	if cc r0 = r1;
+	r1 = [fp + N_CP];
+	r0 *= r1;
+	r1 = [fp + N_CR];
+	r0 = r0 + r1;
+	[fp + N_CPTR] = r0;
+	/* level 1 reads level 0's 4-row ring: row t, above, below */
+	r4 = [fp + N_F4];
+	r4 += 2;
+	r0 = 3;
+	r4 = r4 & r0;
+	r5 = r4;
+	r5 += 3;
+	r5 = r5 & r0;
+	r6 = r4;
+	r6 += 1;
+	r6 = r6 & r0;
+	r4 *= r3;
+	[fp + N_IM] = r4;
+	r5 *= r3;
+	[fp + N_IT] = r5;
+	r6 *= r3;
+	[fp + N_IB] = r6;
+	r0 = [fp + N_R0];
+	[fp + N_IN] = r0;
+	r0 = [fp + N_RK];
+	[fp + N_OUT] = r0;
+	r0 = 1;
+	[fp + N_K] = r0;
 .Ln_level:
 	r1 = [fp + N_R];
 	cc = r1 < 0;
@@ -529,104 +593,69 @@ _bvb_hs_iterate_n_asm:
 	r3 += -1;
 	cc = r3 < r1;
 	if cc jump .Ln_lnext;
-	/* input rows: ring base R6, slot R4, R5 slots */
-	r0 = [fp + N_K];
-	cc = r0 == 1;
-	if !cc jump .Ln_in3;
-	r4 = [fp + N_F4];
-	r4 += 2;
-	r0 = 3;
-	r4 = r4 & r0;
-	r5 = 4;
-	r6 = [fp + N_R0];
-	jump .Ln_in;
-.Ln_in3:
-	r4 = [fp + N_K3];
-	r5 = 3;
 	r6 = [fp + N_IN];
-.Ln_in:
-	r0 = r4;
-	r0 += -1;
-	cc = r0 < 0;
-	r2 = r0 + r5;
-	if cc r0 = r2;                  /* the slot above */
-	r2 = r4;
-	r2 += 1;
-	cc = r2 == r5;
-	r5 = 0;
-	if cc r2 = r5;                  /* the slot below */
+	r4 = [fp + N_IM];
+	r0 = [fp + N_IT];
+	r2 = [fp + N_IB];
 	cc = r1 == 0;
 	if cc r0 = r4;                  /* row 0: the row above is itself */
 	cc = r1 == r3;
 	if cc r2 = r4;                  /* row h - 1: the row below is itself */
-	r3 = [fp + N_W4];
-	r0 *= r3;
 	r0 = r0 + r6;
 	i0 = r0;
-	r2 *= r3;
 	r2 = r2 + r6;
 	i1 = r2;
-	r4 *= r3;
 	r4 = r4 + r6;
 	i2 = r4;
-	/* coefficient row */
-	r0 = [fp + N_KC];
-	r1 = [fp + N_CP];
-	r0 *= r1;
-	r1 = [fp + N_CR];
-	r0 = r0 + r1;
+	r0 = [fp + N_CPTR];
 	i3 = r0;
-	r0 = r0 + r3;
-	p0 = r0;
-	/* output row: level L's into the output ring, the others into their own */
-	r0 = [fp + N_K];
-	r1 = [fp + N_L];
-	cc = r0 == r1;
-	if !cc jump .Ln_outk;
-	r0 = [fp + N_T];
-	r1 = 1;
-	r0 = r0 & r1;
-	r0 *= r3;
-	r1 = [fp + N_RO];
+	r1 = [fp + N_W4];
 	r0 = r0 + r1;
-	jump .Ln_row;
-.Ln_outk:
-	r0 = [fp + N_K3];
-	r0 *= r3;
+	p0 = r0;
+	/* the output row: level L's into the output ring, the others into their own */
+	r0 = [fp + N_OM];
 	r1 = [fp + N_OUT];
 	r0 = r0 + r1;
-.Ln_row:
+	r1 = [fp + N_K];
+	r2 = [fp + N_L];
+	cc = r1 == r2;
+	r1 = [fp + N_OLAST];
+	if cc r0 = r1;
 	p1 = r0;
-	p2 = [fp + N_ROT];
-	p3 = [fp + N_FN];
 	call (p3);
 .Ln_lnext:
-	r0 = [fp + N_R];
-	r0 += -1;
-	[fp + N_R] = r0;
-	r0 = [fp + N_K3];
-	r0 += -1;
-	cc = r0 < 0;
-	r1 = 2;
-	if cc r0 = r1;
-	[fp + N_K3] = r0;
-	r0 = [fp + N_KC];
-	r0 += -1;
-	cc = r0 < 0;
-	r1 = [fp + N_L];
-	if cc r0 = r1;
-	[fp + N_KC] = r0;
+	r0 = [fp + N_OM];
+	r1 = [fp + N_OT];
+	r2 = [fp + N_OB];
+	[fp + N_OM] = r1;
+	[fp + N_IM] = r1;
+	[fp + N_OT] = r2;
+	[fp + N_IT] = r2;
+	[fp + N_OB] = r0;
+	[fp + N_IB] = r0;
+	r0 = [fp + N_CPTR];
+	r1 = [fp + N_CP];
+	r0 = r0 - r1;
+	r1 = [fp + N_CR];
+	cc = r0 < r1 (iu);
+	r1 = [fp + N_CWRAP];
+	r2 = r0 + r1;
+	if cc r0 = r2;
+	[fp + N_CPTR] = r0;
 	r0 = [fp + N_OUT];
 	[fp + N_IN] = r0;
 	r1 = [fp + N_W12];
 	r0 = r0 + r1;
 	[fp + N_OUT] = r0;
+	r0 = [fp + N_R];
+	r0 += -1;
+	[fp + N_R] = r0;
 	r0 = [fp + N_K];
 	r0 += 1;
 	[fp + N_K] = r0;
 	r1 = [fp + N_L];
 	cc = r0 <= r1;
-	if cc jump .Ln_level;
+	if cc jump .Ln_level (bp);
 .Ln_next:
 	/* the next step: t + 1, the slots on */
 	r0 = [fp + N_S3];
