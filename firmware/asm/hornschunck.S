@@ -391,7 +391,7 @@ _bvb_hs_iterate_n_asm:
 	/* the most levels whose flow rows, 12 width (L + 1) bytes, fit BVB_HS_ITER_L1_BUDGET */
 	r0 = 8;
 	r1 = [fp + N_W12];
-	r2 = 20480 (x);
+	r2 = 23040 (x);
 .Ln_lmax:
 	cc = r0 == 1;
 	if cc jump .Ln_lmax_done;

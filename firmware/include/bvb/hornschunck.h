@@ -168,7 +168,7 @@ extern "C" {
  * BVB_HS_ITER_L1_BUDGET (20 KB, with the coefficient rows, 10 KB at most, in the other bank):
  * 8 at 160 wide, 4 at 320, 1 at 640. n iterations take ceil(n / L) passes of as equal a number
  * of levels as they can (10 at 320 wide: 4, 3, 3). */
-#define BVB_HS_ITER_L1_BUDGET 20480
+#define BVB_HS_ITER_L1_BUDGET 23040
 #define BVB_HS_ITER_MAX_LEVELS 8
 #define BVB_HS_ITER_LEVELS(w)                                                                \
   (BVB_HS_ITER_L1_BUDGET / (12 * (w)) - 1 > BVB_HS_ITER_MAX_LEVELS ? BVB_HS_ITER_MAX_LEVELS  \
