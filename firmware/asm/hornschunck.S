@@ -1,7 +1,24 @@
 /* Horn-Schunck optical flow in Blackfin assembly (bvb/hornschunck.h: definitions, Q formats,
- * rounding): bvb_hs_iterate_asm, bvb_hs_prepare_asm and bvb_hornschunck_asm, bit-exact with the C
- * reference, which is written one Blackfin operation per helper so that these instruction
- * sequences reproduce it.
+ * rounding): bvb_hs_iterate_asm, bvb_hs_iterate_n_asm, bvb_hs_prepare_asm and
+ * bvb_hornschunck_asm, bit-exact with the C reference, which is written one Blackfin operation
+ * per helper so that these instruction sequences reproduce it.
+ *
+ * FUSED ITERATIONS (bvb_hs_iterate_n_asm; bvb/hornschunck.h says how): modelled cycles, N = 10
+ *   iterations in one call, c/px per pixel per iteration; coefficients and flow in SDRAM, the
+ *   flow rows' scratch in L1 bank B, the coefficient rows' in bank A (bfbench bench):
+ *                    160x120               320x240               640x480
+ *   hs_iterate_n   2,199,204  (11.45)    8,204,149  (10.68)    640X480_TBD
+ *   bound            (10.00: 5 + 5 levels) (10.00: 5 + 5)        (14.00: 5 x 2, bus-bound)
+ *   The simulator's own counts are 2,151,319 and 8,109,604: the model adds 1.2-2.2% (waiting
+ *   for DMA where a pass fills and drains, the DMA registers' accesses), so the transfers hide
+ *   under the compute. Where the 320x240 call's cycles go (bfbench profile hs_iterate_n): the
+ *   row routine's interior loop 7,632,000 (9.94 per pixel an iteration, at its issue bound of
+ *   30 cycles per 3 pixels); the level loop's per-row work (pointers, clamps, the slot
+ *   rotation) 186,300 (76 a row, 2,400 rows); the DMA waits 65,400 (the first two steps of a
+ *   pass bring rows with nothing to compute, the last ones send rows with less); the rest,
+ *   320,000: each row's first and last pixel and its call (about 50 a row) and the per-step
+ *   job (three slots re-addressed and started, about 400 a step, 494 steps). Against the bound
+ *   1.07x at 320; 1.15x at 160 (the same per-row cost over half the pixels a row).
  *
  * CYCLES (bfbench bench, per call, empty-call overhead subtracted; c/px per frame pixel; C = the
  *   reference built with bfin-elf-gcc -O2). Modelled BF537 cycles (--timing bf537), frames,
@@ -76,9 +93,14 @@
  * MEMORY. The kernels work wherever the caller puts the buffers. At the robot's sizes frames,
  *   coefficients and flow live in SDRAM (working set 14 bytes per pixel: 263 KB at 160x120, past
  *   the 64 KB of L1 data); the bench places them there. The simulator's own counts are those of
- *   data in L1; the modelled ones pay SDRAM through the cache, which the row-band DMA scheme of
- *   the header (22 bytes x width per iteration band in L1) would hide. The count table is in L1
- *   data bank A; the rsqrt table is the C reference's (.rodata).
+ *   data in L1; the modelled ones of bvb_hs_iterate_asm and bvb_hornschunck_asm pay SDRAM
+ *   through the cache (one iteration alone is bus-bound: 28 cycles a pixel for its 14 bytes);
+ *   bvb_hs_iterate_n_asm fuses the iterations over L1 rings (FUSED ITERATIONS above); the
+ *   hornschunck driver would need an L1 scratch beside its frame-sized one to call it. The count
+ *   table is in L1 data bank A; the rsqrt table is the C reference's (.rodata).
+ *
+ * ROWS. One routine makes an output row (HS_PIX0, then the loop of HS_PIX, then the last pixel)
+ *   for both iteration kernels: L1 instruction memory has no room for a copy per kernel.
  *
  * READS stay inside the buffers: frame rows are read as aligned words only up to the word that
  *   holds the row's last pixel; the coefficient rows only inside their width; the flow rows

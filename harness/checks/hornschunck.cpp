@@ -486,10 +486,10 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
 // prepare's bus bound with the frames and coefficients in SDRAM is lower: 2 bytes in and 6 out
 // per pixel at 0.5 byte per core cycle (bvb/dma.h) is 16.
 // hs_iterate_n (frames in SDRAM): per pass of L fused levels (bvb/hornschunck.h: FUSED
-// ITERATIONS; N = 10 at 320 wide is 4, 3, 3) the larger of the compute, 10 L, and the bus, 14
-// bytes a pixel (6 coefficients and 4 flow in, 4 flow out) at 0.5 byte a cycle, 28: 100 per
-// pixel for the 10 iterations at 160 (5, 5) and 320 (4, 3, 3), 280 at 640 (L = 1, bus-bound);
-// the bench's c/px divides it by the 10 iterations.
+// ITERATIONS; N = 10 at 160 and 320 wide is two passes of 5, at 640 five of 2) the larger of
+// the compute, 10 L, and the bus, 14 bytes a pixel (6 coefficients and 4 flow in, 4 flow out)
+// at 0.5 byte a cycle, 28: 100 per pixel for the 10 iterations at 160 and 320, 140 at 640
+// (bus-bound); the bench's c/px divides it by the 10 iterations (10.0, 10.0, 14.0).
 double iterate_n_bound(int w, int iterations) {
   const int lmax = BVB_HS_ITER_LEVELS(w);
   double c = 0;

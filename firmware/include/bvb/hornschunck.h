@@ -165,9 +165,13 @@ extern "C" {
  * coefficients L+1 (L read, 1 arriving): 12 (L+1) width bytes of flow rows and (L+1) coefficient
  * rows. A pass moves 14 bytes a pixel through SDRAM once for its L iterations (28 / L cycles a
  * pixel an iteration at 0.5 byte a cycle). L is the most levels (at most 8) whose flow rows fit
- * BVB_HS_ITER_L1_BUDGET (20 KB, with the coefficient rows, 10 KB at most, in the other bank):
- * 8 at 160 wide, 4 at 320, 1 at 640. n iterations take ceil(n / L) passes of as equal a number
- * of levels as they can (10 at 320 wide: 4, 3, 3). */
+ * BVB_HS_ITER_L1_BUDGET (22.5 KB: most of the 24 KB that L1 bank B has beside the stack; the
+ * coefficient rows, 11.6 KB at most, go in bank A): 8 at 160 wide, 5 at 320, 2 at 640. n
+ * iterations take ceil(n / L) passes of as equal a number of levels as they can (10 at 160 and
+ * 320 wide: 5 and 5; at 640, five of 2, bus-bound at 14 cycles a pixel an iteration; vertical
+ * tiles with halos would let wider frames fuse more levels, not built). Each pass after the
+ * first works in place in uv_out: an input row is in L1 before the output row that replaces it
+ * leaves. */
 #define BVB_HS_ITER_L1_BUDGET 23040
 #define BVB_HS_ITER_MAX_LEVELS 8
 #define BVB_HS_ITER_LEVELS(w)                                                                \
