@@ -7,9 +7,10 @@
  *   iterations in one call, c/px per pixel per iteration; coefficients and flow in SDRAM, the
  *   flow rows' scratch in L1 bank B, the coefficient rows' in bank A (bfbench bench):
  *                    160x120               320x240               640x480
- *   hs_iterate_n   2,199,204  (11.45)    8,204,149  (10.68)    640X480_TBD
+ *   hs_iterate_n   2,199,204  (11.45)    8,204,149  (10.68)    44,626,089  (14.53)
  *   bound            (10.00: 5 + 5 levels) (10.00: 5 + 5)        (14.00: 5 x 2, bus-bound)
- *   The simulator's own counts are 2,151,319 and 8,109,604: the model adds 1.2-2.2% (waiting
+ *   The simulator's own counts are 2,151,319 and 8,109,604 (32,263,525 at 640: bus-bound, the
+ *   model waits for the transfers there, 1.04x its bus bound): the model adds 1.2-2.2% (waiting
  *   for DMA where a pass fills and drains, the DMA registers' accesses), so the transfers hide
  *   under the compute. Where the 320x240 call's cycles go (bfbench profile hs_iterate_n): the
  *   row routine's interior loop 7,632,000 (9.94 per pixel an iteration, at its issue bound of
