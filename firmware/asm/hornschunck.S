@@ -25,9 +25,12 @@
  *   reference built with bfin-elf-gcc -O2). Modelled BF537 cycles (--timing bf537), frames,
  *   coefficients and flow in SDRAM through the data cache, as the bench places them:
  *                    160x120               320x240
- *   hs_iterate     1,192,945  (62.13)    4,667,111  (60.77)    bound 10
+ *   hs_iterate     1,195,196  (62.25)    4,669,482  (60.80)    bound 10 (bus 28)
  *   hs_prepare       410,030  (21.36)    1,504,833  (19.59)    bound 17 (bus 16)
- *   hornschunck   13,199,603 (687.5)    52,961,454 (689.6)     bound 118, N = 10
+ *   hornschunck   13,226,105 (688.9)    52,997,199 (690.1)     bound 118, N = 10
+ *   (hs_iterate and hornschunck: 2,000-2,500 cycles more at 160x120 than before their rows
+ *   became calls of the shared row routine, ROWS below: 10 cycles a row; the simulator's counts
+ *   below are those of before.)
  *   hs_prepare streams its rows through L1 (the scratch in L1 bank B; STREAMED PATH below):
  *   640x480 5,804,772 (18.90). Its simulator counts are 370,510 and 1,432,760 against the
  *   343,133 and 1,339,013 of the same code on data in L1 (below): the 27k / 94k between them
