@@ -28,9 +28,9 @@
  *   hs_iterate     1,195,196  (62.25)    4,669,482  (60.80)    bound 10 (bus 28)
  *   hs_prepare       410,030  (21.36)    1,504,833  (19.59)    bound 17 (bus 16)
  *   hornschunck   13,226,105 (688.9)    52,997,199 (690.1)     bound 118, N = 10
- *   (hs_iterate and hornschunck: 2,000-2,500 cycles more at 160x120 than before their rows
- *   became calls of the shared row routine, ROWS below: 10 cycles a row; the simulator's counts
- *   below are those of before.)
+ *   (hs_iterate and hornschunck: 2,250 to 2,850 cycles an iteration more than before their rows
+ *   became calls of the shared row routine, ROWS below: the call and return, 10 cycles a row,
+ *   and at 160 wide the entry's two jumps; the simulator's counts below are those of before.)
  *   hs_prepare streams its rows through L1 (the scratch in L1 bank B; STREAMED PATH below):
  *   640x480 5,804,772 (18.90). Its simulator counts are 370,510 and 1,432,760 against the
  *   343,133 and 1,339,013 of the same code on data in L1 (below): the 27k / 94k between them
