@@ -269,8 +269,7 @@ CheckCall iterate_call(int w, int h, const std::vector<int16_t> &coef, const std
   return c;
 }
 
-// flow_place, coef_place: where the two scratches go (0: wherever the caller's placement puts
-// them).
+// hs_iterate_n: the flow rows' and the coefficient rows' scratches are buffers 3 and 4.
 CheckCall iterate_n_call(int w, int h, const std::vector<int16_t> &coef, const std::vector<int16_t> &uv,
                          int in_stride, int out_stride, int iterations, const std::string &name) {
   CheckCall c;
