@@ -300,6 +300,45 @@ TEST(HornSchunckFlow, ConvenienceFunctionEqualsPrepareAndIterations) {
   }
 }
 
+// bvb_hs_iterate_n (the in-place passes with saved rows) = N ping-ponged bvb_hs_iterate calls,
+// on strided buffers (the padding and uv_in left alone), heights below and above N, random flow.
+TEST(HornSchunckIterate, IterateNEqualsPingPongedIterations) {
+  const int sizes[][2] = {{2, 2}, {5, 3}, {20, 13}, {7, 2}, {33, 4}};
+  std::mt19937 rng(7);
+  for (const auto &sz : sizes) {
+    const int w = sz[0], h = sz[1];
+    const bvb::Image a = texture(w, h, 5), b = texture(w, h, 5, -0.6, 0.3);
+    std::vector<int16_t> coef(BVB_HS_COEF_BYTES(w, h) / 2);
+    bvb_hs_prepare_c(a.data.data(), b.data.data(), w, h, w, kAlpha2, coef.data(), nullptr);
+    const int is = 4 * w + 8, os = 4 * w + 4;
+    std::vector<int16_t> in(size_t(is / 2) * h);
+    for (auto &v : in) v = int16_t(int(rng() % 8193) - 4096);
+    const std::vector<int16_t> in0 = in;
+    for (int n : {1, 2, 3, 6}) {
+      // the definition: n single iterations, packed
+      std::vector<int16_t> cur(size_t(2) * w * h), next(cur.size());
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < 2 * w; ++x) cur[size_t(y) * 2 * w + x] = in[size_t(y) * (is / 2) + x];
+      for (int k = 0; k < n; ++k) {
+        bvb_hs_iterate_c(coef.data(), cur.data(), 4 * w, next.data(), 4 * w, w, h);
+        cur.swap(next);
+      }
+      std::vector<int16_t> out(size_t(os / 2) * h, int16_t(0x1234));
+      std::vector<uint32_t> fs(BVB_HS_ITER_FLOW_SCRATCH_BYTES(w) / 4), cs(BVB_HS_ITER_COEF_SCRATCH_BYTES(w) / 4);
+      bvb_hs_iterate_n_c(coef.data(), in.data(), is, out.data(), os, w, h, n, fs.data(), cs.data());
+      ASSERT_EQ(in, in0) << "uv_in written";
+      for (int y = 0; y < h; ++y)
+        for (int i = 0; i < os / 2; ++i) {
+          const int16_t got = out[size_t(y) * (os / 2) + i];
+          if (i < 2 * w)
+            ASSERT_EQ(got, cur[size_t(y) * 2 * w + i]) << w << "x" << h << " N=" << n << " at " << i << "," << y;
+          else
+            ASSERT_EQ(got, int16_t(0x1234)) << "padding overwritten, " << w << "x" << h;
+        }
+    }
+  }
+}
+
 // Fixed point against double on a smooth texture moved by a fraction of a pixel, odd size.
 TEST(HornSchunckFlow, AgreesWithDoubleOnSyntheticMotion) {
   const int w = 61, h = 47;

@@ -1,15 +1,36 @@
 /* Horn-Schunck optical flow in Blackfin assembly (bvb/hornschunck.h: definitions, Q formats,
- * rounding): bvb_hs_iterate_asm, bvb_hs_prepare_asm and bvb_hornschunck_asm, bit-exact with the C
- * reference, which is written one Blackfin operation per helper so that these instruction
- * sequences reproduce it.
+ * rounding): bvb_hs_iterate_asm, bvb_hs_iterate_n_asm, bvb_hs_prepare_asm and
+ * bvb_hornschunck_asm, bit-exact with the C reference, which is written one Blackfin operation
+ * per helper so that these instruction sequences reproduce it.
+ *
+ * FUSED ITERATIONS (bvb_hs_iterate_n_asm; bvb/hornschunck.h says how): modelled cycles, N = 10
+ *   iterations in one call, c/px per pixel per iteration; coefficients and flow in SDRAM, the
+ *   flow rows' scratch in L1 bank B, the coefficient rows' in bank A (bfbench bench):
+ *                    160x120               320x240               640x480
+ *   hs_iterate_n   2,199,204  (11.45)    8,204,149  (10.68)    44,626,089  (14.53)
+ *   bound            (10.00: 5 + 5 levels) (10.00: 5 + 5)        (14.00: 5 x 2, bus-bound)
+ *   The simulator's own counts are 2,151,319 and 8,109,604 (32,263,525 at 640: bus-bound, the
+ *   model waits for the transfers there, 1.04x its bus bound): the model adds 1.2-2.2% (waiting
+ *   for DMA where a pass fills and drains, the DMA registers' accesses), so the transfers hide
+ *   under the compute. Where the 320x240 call's cycles go (bfbench profile hs_iterate_n): the
+ *   row routine's interior loop 7,632,000 (9.94 per pixel an iteration, at its issue bound of
+ *   30 cycles per 3 pixels); the level loop's per-row work (pointers, clamps, the slot
+ *   rotation) 186,300 (76 a row, 2,400 rows); the DMA waits 65,400 (the first two steps of a
+ *   pass bring rows with nothing to compute, the last ones send rows with less); the rest,
+ *   320,000: each row's first and last pixel and its call (about 50 a row) and the per-step
+ *   job (three slots re-addressed and started, about 400 a step, 494 steps). Against the bound
+ *   1.07x at 320; 1.15x at 160 (the same per-row cost over half the pixels a row).
  *
  * CYCLES (bfbench bench, per call, empty-call overhead subtracted; c/px per frame pixel; C = the
  *   reference built with bfin-elf-gcc -O2). Modelled BF537 cycles (--timing bf537), frames,
  *   coefficients and flow in SDRAM through the data cache, as the bench places them:
  *                    160x120               320x240
- *   hs_iterate     1,192,945  (62.13)    4,667,111  (60.77)    bound 10
+ *   hs_iterate     1,195,196  (62.25)    4,669,482  (60.80)    bound 10 (bus 28)
  *   hs_prepare       410,030  (21.36)    1,504,833  (19.59)    bound 17 (bus 16)
- *   hornschunck   13,199,603 (687.5)    52,961,454 (689.6)     bound 118, N = 10
+ *   hornschunck   13,226,105 (688.9)    52,997,199 (690.1)     bound 118, N = 10
+ *   (hs_iterate and hornschunck: 2,250 to 2,850 cycles an iteration more than before their rows
+ *   became calls of the shared row routine, ROWS below: the call and return, 10 cycles a row,
+ *   and at 160 wide the entry's two jumps; the simulator's counts below are those of before.)
  *   hs_prepare streams its rows through L1 (the scratch in L1 bank B; STREAMED PATH below):
  *   640x480 5,804,772 (18.90). Its simulator counts are 370,510 and 1,432,760 against the
  *   343,133 and 1,339,013 of the same code on data in L1 (below): the 27k / 94k between them
@@ -76,9 +97,14 @@
  * MEMORY. The kernels work wherever the caller puts the buffers. At the robot's sizes frames,
  *   coefficients and flow live in SDRAM (working set 14 bytes per pixel: 263 KB at 160x120, past
  *   the 64 KB of L1 data); the bench places them there. The simulator's own counts are those of
- *   data in L1; the modelled ones pay SDRAM through the cache, which the row-band DMA scheme of
- *   the header (22 bytes x width per iteration band in L1) would hide. The count table is in L1
- *   data bank A; the rsqrt table is the C reference's (.rodata).
+ *   data in L1; the modelled ones of bvb_hs_iterate_asm and bvb_hornschunck_asm pay SDRAM
+ *   through the cache (one iteration alone is bus-bound: 28 cycles a pixel for its 14 bytes);
+ *   bvb_hs_iterate_n_asm fuses the iterations over L1 rings (FUSED ITERATIONS above); the
+ *   hornschunck driver would need an L1 scratch beside its frame-sized one to call it. The count
+ *   table is in L1 data bank A; the rsqrt table is the C reference's (.rodata).
+ *
+ * ROWS. One routine makes an output row (HS_PIX0, then the loop of HS_PIX, then the last pixel)
+ *   for both iteration kernels: L1 instruction memory has no room for a copy per kernel.
  *
  * READS stay inside the buffers: frame rows are read as aligned words only up to the word that
  *   holds the row's last pixel; the coefficient rows only inside their width; the flow rows
@@ -108,9 +134,9 @@
 	R3.L = R3.L + R3.H (S);
 .endm
 
-/* The rows of one call, for (width - 2) mod 3 == m: pixel 0 leaves c(0), c(1) in x0, x1, the
- * registers the first rotation step after it expects. */
-.macro HS_ROWS m, x0, x1
+/* The rows of one call, for (width - 2) mod 3 == m: each row is the row routine HS_ROW1 m
+ * (below; one copy of the row code serves this kernel and bvb_hs_iterate_n_asm). */
+.macro HS_ROWS m
 	lsetup (.Lit_row\m, .Lit_row_end\m) lc1;
 .Lit_row\m:
 	i0 = b2;
@@ -124,52 +150,7 @@
 	i3 = p4;
 	p0 = p4 + fp;
 	p1 = p5;
-	/* Pixel 0: left neighbours are the pixel itself. */
-	mnop || r0 = [i0++] || r1 = [i1++];
-	\x0 = r0 +|+ r1 (s) || r0 = [i0++] || r1 = [i1++];
-	\x1 = r0 +|+ r1 (s) || r0 = [i2 ++ m2];
-	a1 = \x0\().h * r7.l, a0 = \x0\().l * r7.l || r1 = [i2 ++ m1];
-	r2 = r0 +|+ r1 (s) || r1 = w[p0++] (x) || r0 = [i3++];
-	a1 += \x1\().h * r7.l, a0 += \x1\().l * r7.l;
-	a1 += r2.h * r7.h, a0 += r2.l * r7.h;
-	r3.h = (a1 += \x0\().h * r7.h), r3.l = (a0 += \x0\().l * r7.h);
-	r3.h = r3.h * r0.h, r3.l = r3.l * r0.l (s2rnd);
-	r3.l = r3.l + r3.h (s);
-	r3.l = r3.l + r1.l (s) || r2 = [i0++];           /* T(2), for pixel 1 */
-.if \m == 1
-	HS_PIX r6, r4, r5
-	r3.l = r3.l + r1.l (s);
-.endif
-.if \m == 2
-	HS_PIX r5, r6, r4
-	r3.l = r3.l + r1.l (s);
-	HS_PIX r6, r4, r5
-	r3.l = r3.l + r1.l (s);
-.endif
-	cc = p2 == 0;
-	if cc jump .Lit_last\m;
-	lsetup (.Lit_pix\m, .Lit_pix_end\m) lc0 = p2;
-.Lit_pix\m:
-	HS_PIX r4, r5, r6
-	r3.l = r3.l + r1.l (s);
-	HS_PIX r5, r6, r4
-	r3.l = r3.l + r1.l (s);
-	HS_PIX r6, r4, r5
-.Lit_pix_end\m:
-	r3.l = r3.l + r1.l (s);
-.Lit_last\m:
-	/* Pixel width-1: cl = R4, c0 = R5 and cr = c0. */
-	r3.h = (a1 -= r3.l * r0.h), r3.l = (a0 -= r3.l * r0.l) (ih) || r0 = [i2 ++ m2];
-	a1 = r4.h * r7.l, a0 = r4.l * r7.l || [p1++] = r3 || r1 = [i2];
-	r2 = r0 +|+ r1 (s) || r1 = w[p0++] (x) || r0 = [i3++];
-	a1 += r5.h * r7.l, a0 += r5.l * r7.l;
-	a1 += r2.h * r7.h, a0 += r2.l * r7.h;
-	r3.h = (a1 += r5.h * r7.h), r3.l = (a0 += r5.l * r7.h);
-	r3.h = r3.h * r0.h, r3.l = r3.l * r0.l (s2rnd);
-	r3.l = r3.l + r3.h (s);
-	r3.l = r3.l + r1.l (s);
-	r3.h = (a1 -= r3.l * r0.h), r3.l = (a0 -= r3.l * r0.l) (ih);
-	[p1] = r3;
+	call .Lrow1_\m;
 	/* Next row: top = this row, then advance the three row pointers. */
 	b2 = p3;
 	r0 = p3;
@@ -187,23 +168,87 @@
 	p5 = r0;
 .endm
 
+/* One output row, as a subroutine (for HS_ROWS and bvb_hs_iterate_n_asm): I0 = row above (T),
+ * I1 = row below (B), I2 = the row (M), I3 = its (gy':gx') words, P0 = its gt' halves, P1 = the
+ * output row, P2 = (width - 2) / 3, R7 = (W6:W12), M0 = 8, M1 = -4, M2 = 4; entry .Lrow1_m for
+ * m = (width - 2) mod 3. Clobbers R0-R6, A0, A1, I0-I3, P0, P1, LC0, ASTAT. T is read one word
+ * past its row (unused): the callers' layouts put another row there. The three entries differ
+ * in pixel 0's registers and the m pixels before the loop: entry 2's state after its first
+ * pixel is entry 1's after pixel 0, and entry 1's after its pixel entry 0's, so they chain. */
+.macro HS_PIX0 x0, x1
+	mnop || r0 = [i0++] || r1 = [i1++];
+	\x0 = r0 +|+ r1 (s) || r0 = [i0++] || r1 = [i1++];
+	\x1 = r0 +|+ r1 (s) || r0 = [i2 ++ m2];
+	a1 = \x0\().h * r7.l, a0 = \x0\().l * r7.l || r1 = [i2 ++ m1];
+	r2 = r0 +|+ r1 (s) || r1 = w[p0++] (x) || r0 = [i3++];
+	a1 += \x1\().h * r7.l, a0 += \x1\().l * r7.l;
+	a1 += r2.h * r7.h, a0 += r2.l * r7.h;
+	r3.h = (a1 += \x0\().h * r7.h), r3.l = (a0 += \x0\().l * r7.h);
+	r3.h = r3.h * r0.h, r3.l = r3.l * r0.l (s2rnd);
+	r3.l = r3.l + r3.h (s);
+	r3.l = r3.l + r1.l (s) || r2 = [i0++];
+.endm
+
 	.section .l1.text, "ax"
+.Lrow1_2:
+	HS_PIX0 r5, r6
+	HS_PIX r5, r6, r4
+	r3.l = r3.l + r1.l (s);
+	jump.s .Lr1_m1;
+.Lrow1_1:
+	HS_PIX0 r6, r4
+.Lr1_m1:
+	HS_PIX r6, r4, r5
+	r3.l = r3.l + r1.l (s);
+	jump.s .Lr1_m0;
+.Lrow1_0:
+	HS_PIX0 r4, r5
+.Lr1_m0:
+	cc = p2 == 0;
+	if cc jump .Lr1_last0;
+	lsetup (.Lr1_pix0, .Lr1_pix_end0) lc0 = p2;
+.Lr1_pix0:
+	HS_PIX r4, r5, r6
+	r3.l = r3.l + r1.l (s);
+	HS_PIX r5, r6, r4
+	r3.l = r3.l + r1.l (s);
+	HS_PIX r6, r4, r5
+.Lr1_pix_end0:
+	r3.l = r3.l + r1.l (s);
+.Lr1_last0:
+.Lr1_tail:
+	/* Pixel width-1: cl = R4, c0 = R5 and cr = c0. */
+	r3.h = (a1 -= r3.l * r0.h), r3.l = (a0 -= r3.l * r0.l) (ih) || r0 = [i2 ++ m2];
+	a1 = r4.h * r7.l, a0 = r4.l * r7.l || [p1++] = r3 || r1 = [i2];
+	r2 = r0 +|+ r1 (s) || r1 = w[p0++] (x) || r0 = [i3++];
+	a1 += r5.h * r7.l, a0 += r5.l * r7.l;
+	a1 += r2.h * r7.h, a0 += r2.l * r7.h;
+	r3.h = (a1 += r5.h * r7.h), r3.l = (a0 += r5.l * r7.h);
+	r3.h = r3.h * r0.h, r3.l = r3.l * r0.l (s2rnd);
+	r3.l = r3.l + r3.h (s);
+	r3.l = r3.l + r1.l (s);
+	r3.h = (a1 -= r3.l * r0.h), r3.l = (a0 -= r3.l * r0.l) (ih);
+	[p1] = r3;
+	rts;
+
+
 	.align 4
 	.global _bvb_hs_iterate_asm
 	.type _bvb_hs_iterate_asm, STT_FUNC
 _bvb_hs_iterate_asm:
 	[--sp] = (r7:4, p5:3);
 	[--sp] = fp;
-	/* Arguments 4-7 sit 32 bytes further up after the saves. */
+	[--sp] = rets;                  /* the rows are calls */
+	/* Arguments 4-7 sit 36 bytes further up after the saves. */
 	p4 = r0;
 	p3 = r1;
 	b0 = r2;
 	b2 = r1;
-	p5 = [sp + 44];
-	r0 = [sp + 48];
+	p5 = [sp + 48];
+	r0 = [sp + 52];
 	b1 = r0;
-	r6 = [sp + 52];
-	r5 = [sp + 56];
+	r6 = [sp + 56];
+	r5 = [sp + 60];
 	lc1 = r5;
 	r0 = r5;
 	r0 += -1;
@@ -222,8 +267,7 @@ _bvb_hs_iterate_asm:
 	/* n = (width - 2) / 3 rotations of the loop, m = (width - 2) mod 3 pixels before it. */
 	r0 = r6;
 	r0 += -2;
-	r1.l = 0xaaab;
-	r1.h = 0;
+	r1 = 0xaaab (z);
 	r2 = r0;
 	r2 *= r1;
 	r2 >>= 17;
@@ -243,18 +287,559 @@ _bvb_hs_iterate_asm:
 	if cc jump .Lit_m0;
 	cc = r0 == 1;
 	if cc jump .Lit_m1;
-	HS_ROWS 2, r5, r6
+	HS_ROWS 2
 	jump .Lit_done;
 .Lit_m1:
-	HS_ROWS 1, r6, r4
+	HS_ROWS 1
 	jump .Lit_done;
 .Lit_m0:
-	HS_ROWS 0, r4, r5
+	HS_ROWS 0
 .Lit_done:
+	rets = [sp++];
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;
 	.size _bvb_hs_iterate_asm, . - _bvb_hs_iterate_asm
+
+#include "bvb/dma.h"
+
+/* ---------------------------------------------------------------------------------------------
+ * bvb_hs_iterate_n_asm(coef, uv_in, in_stride, uv_out, out_stride, width, height, iterations,
+ *                      flow_scratch, coef_scratch): the iterations fused, L levels a pass
+ *                      (bvb/hornschunck.h: FUSED ITERATIONS)
+ * --------------------------------------------------------------------------------------------- */
+
+
+/* Stack frame of bvb_hs_iterate_n_asm (FP-relative locals; arguments 4-10 at FP + 48). */
+#define N_COEF  -4    /* the coefficients (a frame) */
+#define N_SRC   -8    /* this pass's input field: uv_in, then uv_out in place */
+#define N_SS    -12   /* and its stride */
+#define N_W4    -16   /* flow row bytes, 4 width */
+#define N_CP    -20   /* coefficient row bytes */
+#define N_ROT   -24   /* (width - 2) / 3 */
+#define N_FN    -28   /* the row routine for (width - 2) mod 3 */
+#define N_LMAX  -32   /* levels the scratch holds */
+#define N_LEFT  -36   /* iterations left */
+#define N_L     -40   /* levels of this pass */
+#define N_T     -44   /* the step */
+#define N_DMA   -48   /* 1: the rows move by DMA, 0: by the core */
+#define N_R0    -52   /* level 0's ring (4 rows) */
+#define N_RK    -56   /* level 1's ring (3 rows); level k's at N_RK + 12 width (k - 1) */
+#define N_RO    -60   /* the output's ring (2 rows) */
+#define N_CR    -64   /* the coefficient ring (L + 1 rows) */
+#define N_S3    -68   /* t mod 3 */
+#define N_F4    -72   /* level 0's slot of the row arriving, (t + 2) mod 4 */
+#define N_CF    -76   /* the coefficient slot of the row arriving, (t + 1) mod (L + 1) */
+#define N_K     -80   /* the level */
+#define N_R     -84   /* the row it makes, t - k + 1 */
+#define N_CPTR  -88   /* its coefficient row */
+#define N_CWRAP -92   /* the coefficient ring's bytes */
+#define N_IN    -96   /* the level's input ring */
+#define N_OUT   -100  /* the level's output ring (k < L) */
+#define N_W12   -104  /* 12 width: a ring of 3 rows */
+#define N_TEND  -108  /* the last step, height - 1 + L */
+#define N_JOBP  -112  /* the addresses of N_JOB and N_X0 */
+#define N_X0P   -116
+#define N_OLAST -120  /* level L's output row */
+#define N_OM    -124  /* the slots of the level's row in a 3-row ring: the row */
+#define N_OT    -128  /* above */
+#define N_OB    -132  /* below */
+#define N_IM    -136  /* the slots the level reads (level 1: in level 0's 4-row ring) */
+#define N_IT    -140
+#define N_IB    -144
+#define N_X0    -168  /* struct bvb_dma_xfer: level 0's row in (N_X1, N_X2 24 bytes below) */
+#define N_X1    -192  /* the coefficient row in */
+#define N_X2    -216  /* the output row out */
+#define N_JOB   -328  /* the DMA job (BVB_DMA_JOB_BYTES) */
+#define N_FRAME 340   /* locals at FP-328..-1, the C calls' 12 bytes of arguments below */
+
+
+	.align 4
+	.global _bvb_hs_iterate_n_asm
+	.type _bvb_hs_iterate_n_asm, STT_FUNC
+_bvb_hs_iterate_n_asm:
+	[--sp] = (r7:4, p5:3);
+	link N_FRAME;
+	[fp + N_COEF] = r0;
+	[fp + N_SRC] = r1;
+	[fp + N_SS] = r2;
+	r0 = 8;
+	m0 = r0;                        /* the row routine's modifiers (the DMA calls keep them) */
+	r0 = -4;
+	m1 = r0;
+	r0 = 4;
+	m2 = r0;
+	r1 = fp;
+	r3 = N_JOB (x);
+	r3 = r3 + r1;
+	[fp + N_JOBP] = r3;
+	r3 = N_X0 (x);
+	r3 = r3 + r1;
+	[fp + N_X0P] = r3;
+	r0 = [fp + 64];                 /* iterations */
+	cc = r0 <= 0;
+	if cc jump .Ln_ret;
+	[fp + N_LEFT] = r0;
+	r6 = [fp + 56];                 /* width */
+	r0 = r6 << 2;
+	[fp + N_W4] = r0;
+	r1 = r0 + r0;
+	r1 = r1 + r0;
+	[fp + N_W12] = r1;
+	r1 = r6 << 1;
+	r0 = r0 + r1;
+	r1 = 1;
+	r1 = r1 & r6;
+	r1 = r1 << 1;
+	r0 = r0 + r1;
+	[fp + N_CP] = r0;               /* 2 BVB_HS_COEF_PITCH */
+	r0 = r6;
+	r0 += -2;
+	r1 = 0xaaab (z);
+	r2 = r0;
+	r2 *= r1;
+	r2 >>= 17;
+	[fp + N_ROT] = r2;
+	r1 = r2 << 1;
+	r1 = r1 + r2;
+	r0 = r0 - r1;
+	p0.l = .Lrow1_0;
+	p0.h = .Lrow1_0;
+	p1.l = .Lrow1_1;
+	p1.h = .Lrow1_1;
+	cc = r0 == 1;
+	if cc p0 = p1;
+	p1.l = .Lrow1_2;
+	p1.h = .Lrow1_2;
+	cc = r0 == 2;
+	if cc p0 = p1;
+	[fp + N_FN] = p0;
+	/* the most levels whose flow rows, 12 width (L + 1) bytes, fit BVB_HS_ITER_L1_BUDGET */
+	r0 = 8;
+	r1 = [fp + N_W12];
+	r2 = 23040 (x);
+.Ln_lmax:
+	cc = r0 == 1;
+	if cc jump .Ln_lmax_done;
+	r3 = r0;
+	r3 += 1;
+	r3 *= r1;
+	cc = r3 <= r2;
+	if cc jump .Ln_lmax_done;
+	r0 += -1;
+	jump .Ln_lmax;
+.Ln_lmax_done:
+	[fp + N_LMAX] = r0;
+
+.Ln_pass:
+	/* passes = ceil(left / lmax), L = ceil(left / passes) */
+	r0 = [fp + N_LEFT];
+	r1 = [fp + N_LMAX];
+	r2 = 1;
+	r3 = r1;
+.Ln_pp:
+	cc = r0 <= r3;
+	if cc jump .Ln_pp_done;
+	r2 += 1;
+	r3 = r3 + r1;
+	jump .Ln_pp;
+.Ln_pp_done:
+	r4 = 1;
+	r5 = r2;
+.Ln_ll:
+	cc = r0 <= r5;
+	if cc jump .Ln_ll_done;
+	r4 += 1;
+	r5 = r5 + r2;
+	jump .Ln_ll;
+.Ln_ll_done:
+	[fp + N_L] = r4;
+	/* the rings: level 0 (4 rows), levels 1..L-1 (3 each), the output (2); coefficients L+1 */
+	r0 = [fp + 68];
+	[fp + N_R0] = r0;
+	r1 = [fp + N_W4];
+	r1 <<= 2;
+	r0 = r0 + r1;
+	[fp + N_RK] = r0;
+	r1 = [fp + N_W12];
+	r2 = r4;
+	r2 += -1;
+	r2 *= r1;
+	r0 = r0 + r2;
+	[fp + N_RO] = r0;
+	r0 = [fp + 72];
+	[fp + N_CR] = r0;
+	r0 = r4;
+	r0 += 1;
+	r1 = [fp + N_CP];
+	r0 *= r1;
+	[fp + N_CWRAP] = r0;
+	r0 = [fp + 60];
+	r0 += -1;
+	r0 = r0 + r4;
+	[fp + N_TEND] = r0;
+	/* the step counters at t = -2 */
+	r0 = -2;
+	[fp + N_T] = r0;
+	r0 = 1;
+	[fp + N_S3] = r0;
+	r0 = 0;
+	[fp + N_F4] = r0;
+	[fp + N_CF] = r4;
+	/* the three transfers: their shapes, and the addresses of step -2 */
+	r0 = [fp + N_SS];
+	[fp + N_X0 + DMAX_SS] = r0;
+	r0 = [fp + N_W4];
+	[fp + N_X0 + DMAX_DS] = r0;
+	[fp + N_X0 + DMAX_W] = r0;
+	r1 = 1;
+	[fp + N_X0 + DMAX_ROWS] = r1;
+	[fp + N_X2 + DMAX_SS] = r0;
+	[fp + N_X2 + DMAX_W] = r0;
+	[fp + N_X2 + DMAX_ROWS] = r1;
+	[fp + N_X1 + DMAX_ROWS] = r1;
+	r0 = [fp + 52];
+	[fp + N_X2 + DMAX_DS] = r0;
+	r0 = [fp + N_CP];
+	[fp + N_X1 + DMAX_SS] = r0;
+	[fp + N_X1 + DMAX_DS] = r0;
+	[fp + N_X1 + DMAX_W] = r0;
+	call .Ln_addr;
+	/* DMA when it takes all three (every buffer where it reaches), else the core copies */
+	r6 = 0;
+	r5 = [fp + N_X0P];
+.Ln_prep:
+	r0 = [fp + N_JOBP];
+	r1 = r6;
+	r2 = r5;
+	call _bvb_dma_prepare;
+	r7 = 0;
+	cc = r0 == 0;
+	if !cc jump .Ln_mode;
+	r5 += -24;
+	r6 += 1;
+	r7 = 1;
+	cc = r6 < 3;
+	if cc jump .Ln_prep;
+.Ln_mode:
+	[fp + N_DMA] = r7;
+
+.Ln_step:
+	/* wait for the job of the step before */
+	r0 = [fp + N_T];
+	cc = r0 < -1;
+	if cc jump .Ln_nowait;
+	r1 = [fp + N_DMA];
+	cc = r1 == 0;
+	if cc jump .Ln_nowait;
+	call _bvb_dma_wait;
+.Ln_nowait:
+	call .Ln_addr;
+	call .Ln_job;
+
+	/* the levels: level k makes row t - k + 1 where that is a row */
+	r0 = [fp + N_T];
+	cc = r0 < 0;
+	if cc jump .Ln_next;
+	r1 = [fp + N_TEND];
+	cc = r0 == r1;
+	if cc jump .Ln_next;
+	[fp + N_R] = r0;
+	r7.l = 2731;
+	r7.h = 5461;
+	p2 = [fp + N_ROT];
+	p3 = [fp + N_FN];
+	r3 = [fp + N_W4];
+	/* level L's output row, in the output ring */
+	r1 = 1;
+	r1 = r0 & r1;
+	r1 *= r3;
+	r2 = [fp + N_RO];
+	r1 = r1 + r2;
+	[fp + N_OLAST] = r1;
+	/* row t's slots in a 3-row ring (offsets: the row, above, below); each level after
+	 * the first reads its row's and writes its own into the same slots of its rings, and the
+	 * next level's row is the slot above: the three rotate */
+	r4 = [fp + N_S3];
+	r0 = r4;
+	r0 += -1;
+	cc = r0 < 0;
+	r1 = 2;
+	if cc r0 = r1;
+	r2 = r4;
+	r2 += 1;
+	cc = r2 == 3;
+	r1 = 0;
+	if cc r2 = r1;
+	r4 *= r3;
+	[fp + N_OM] = r4;
+	r0 *= r3;
+	[fp + N_OT] = r0;
+	r2 *= r3;
+	[fp + N_OB] = r2;
+	/* row t's coefficient row */
+	r0 = [fp + N_CF];
+	r0 += -1;
+	cc = r0 < 0;
+	r1 = [fp + N_L];
+	if cc r0 = r1;
+	r1 = [fp + N_CP];
+	r0 *= r1;
+	r1 = [fp + N_CR];
+	r0 = r0 + r1;
+	[fp + N_CPTR] = r0;
+	/* level 1 reads level 0's 4-row ring: row t, above, below */
+	r4 = [fp + N_F4];
+	r4 += 2;
+	r0 = 3;
+	r4 = r4 & r0;
+	r5 = r4;
+	r5 += 3;
+	r5 = r5 & r0;
+	r6 = r4;
+	r6 += 1;
+	r6 = r6 & r0;
+	r4 *= r3;
+	[fp + N_IM] = r4;
+	r5 *= r3;
+	[fp + N_IT] = r5;
+	r6 *= r3;
+	[fp + N_IB] = r6;
+	r0 = [fp + N_R0];
+	[fp + N_IN] = r0;
+	r0 = [fp + N_RK];
+	[fp + N_OUT] = r0;
+	r0 = 1;
+	[fp + N_K] = r0;
+.Ln_level:
+	r1 = [fp + N_R];
+	cc = r1 < 0;
+	if cc jump .Ln_lnext;
+	r3 = [fp + 60];
+	r3 += -1;
+	cc = r3 < r1;
+	if cc jump .Ln_lnext;
+	r6 = [fp + N_IN];
+	r4 = [fp + N_IM];
+	r0 = [fp + N_IT];
+	r2 = [fp + N_IB];
+	cc = r1 == 0;
+	if cc r0 = r4;                  /* row 0: the row above is itself */
+	cc = r1 == r3;
+	if cc r2 = r4;                  /* row h - 1: the row below is itself */
+	r0 = r0 + r6;
+	i0 = r0;
+	r2 = r2 + r6;
+	i1 = r2;
+	r4 = r4 + r6;
+	i2 = r4;
+	r0 = [fp + N_CPTR];
+	i3 = r0;
+	r1 = [fp + N_W4];
+	r0 = r0 + r1;
+	p0 = r0;
+	/* the output row: level L's into the output ring, the others into their own */
+	r0 = [fp + N_OM];
+	r1 = [fp + N_OUT];
+	r0 = r0 + r1;
+	r1 = [fp + N_K];
+	r2 = [fp + N_L];
+	cc = r1 == r2;
+	r1 = [fp + N_OLAST];
+	if cc r0 = r1;
+	p1 = r0;
+	call (p3);
+.Ln_lnext:
+	r0 = [fp + N_OM];
+	r1 = [fp + N_OT];
+	r2 = [fp + N_OB];
+	[fp + N_OM] = r1;
+	[fp + N_IM] = r1;
+	[fp + N_OT] = r2;
+	[fp + N_IT] = r2;
+	[fp + N_OB] = r0;
+	[fp + N_IB] = r0;
+	r0 = [fp + N_CPTR];
+	r1 = [fp + N_CP];
+	r0 = r0 - r1;
+	r1 = [fp + N_CR];
+	cc = r0 < r1 (iu);
+	r1 = [fp + N_CWRAP];
+	r2 = r0 + r1;
+	if cc r0 = r2;
+	[fp + N_CPTR] = r0;
+	r0 = [fp + N_OUT];
+	[fp + N_IN] = r0;
+	r1 = [fp + N_W12];
+	r0 = r0 + r1;
+	[fp + N_OUT] = r0;
+	r0 = [fp + N_R];
+	r0 += -1;
+	[fp + N_R] = r0;
+	r0 = [fp + N_K];
+	r0 += 1;
+	[fp + N_K] = r0;
+	r1 = [fp + N_L];
+	cc = r0 <= r1;
+	if cc jump .Ln_level (bp);
+.Ln_next:
+	/* the next step: t + 1, the slots on */
+	r0 = [fp + N_S3];
+	r0 += 1;
+	cc = r0 == 3;
+	r1 = 0;
+	if cc r0 = r1;
+	[fp + N_S3] = r0;
+	r0 = [fp + N_F4];
+	r0 += 1;
+	r1 = 3;
+	r0 = r0 & r1;
+	[fp + N_F4] = r0;
+	r0 = [fp + N_CF];
+	r0 += 1;
+	r1 = [fp + N_L];
+	cc = r1 < r0;
+	r1 = 0;
+	if cc r0 = r1;
+	[fp + N_CF] = r0;
+	r0 = [fp + N_T];
+	r1 = [fp + N_TEND];
+	cc = r0 == r1;
+	r0 += 1;
+	[fp + N_T] = r0;
+	if cc jump .Ln_pass_end;
+	jump.s .Ln_step;
+.Ln_pass_end:
+	r1 = [fp + N_DMA];
+	cc = r1 == 0;
+	if cc jump .Ln_waited;
+	call _bvb_dma_wait;
+.Ln_waited:
+	/* the next pass reads uv_out and writes it in place (each input row arrives in L1 before
+	 * the output row that replaces it leaves) */
+	r0 = [fp + 48];
+	[fp + N_SRC] = r0;
+	r0 = [fp + 52];
+	[fp + N_SS] = r0;
+	r0 = [fp + N_LEFT];
+	r1 = [fp + N_L];
+	r0 = r0 - r1;
+	[fp + N_LEFT] = r0;
+	cc = r0 <= 0;
+	if cc jump .Ln_ret;
+	jump.s .Ln_pass;
+.Ln_ret:
+	unlink;
+	(r7:4, p5:3) = [sp++];
+	rts;
+
+/* The step's job (R2 = its slots, 1 to 3): level 0's row t + 2 in (row h - 1 past the end: a slot no one reads),
+   * coefficient row t + 1 in (t >= -1), output row t - L out (t >= L) */
+.Ln_addr:
+	r2 = [fp + 60];
+	r2 += -1;
+	r3 = 0;
+	r0 = [fp + N_T];
+	r0 += 2;
+	r0 = min (r0, r2);
+	r1 = [fp + N_SS];
+	r0 *= r1;
+	r1 = [fp + N_SRC];
+	r0 = r0 + r1;
+	[fp + N_X0 + DMAX_SRC] = r0;
+	r0 = [fp + N_F4];
+	r1 = [fp + N_W4];
+	r0 *= r1;
+	r1 = [fp + N_R0];
+	r0 = r0 + r1;
+	[fp + N_X0 + DMAX_DST] = r0;
+	r0 = [fp + N_T];
+	r0 += 1;
+	r0 = min (r0, r2);
+	r0 = max (r0, r3);
+	r1 = [fp + N_CP];
+	r0 *= r1;
+	r1 = [fp + N_COEF];
+	r0 = r0 + r1;
+	[fp + N_X1 + DMAX_SRC] = r0;
+	r0 = [fp + N_CF];
+	r1 = [fp + N_CP];
+	r0 *= r1;
+	r1 = [fp + N_CR];
+	r0 = r0 + r1;
+	[fp + N_X1 + DMAX_DST] = r0;
+	r0 = [fp + N_T];
+	r0 += -1;
+	r1 = 1;
+	r0 = r0 & r1;
+	r1 = [fp + N_W4];
+	r0 *= r1;
+	r1 = [fp + N_RO];
+	r0 = r0 + r1;
+	[fp + N_X2 + DMAX_SRC] = r0;
+	r0 = [fp + N_T];
+	r1 = [fp + N_L];
+	r0 = r0 - r1;
+	r0 = max (r0, r3);
+	r1 = [fp + 52];
+	r0 *= r1;
+	r1 = [fp + 48];
+	r0 = r0 + r1;
+	[fp + N_X2 + DMAX_DST] = r0;
+	r0 = [fp + N_T];
+	r1 = [fp + N_L];
+	r2 = 3;
+	r3 = 2;
+	cc = r0 < r1;
+	if cc r2 = r3;
+	cc = r0 < -1;
+	r3 = 1;
+	if cc r2 = r3;
+	rts;
+
+/* Runs slots 0 .. R2-1 of the step's job (level 0's row, the coefficient row, the output row):
+ * started on the DMA (the slots re-addressed) or copied by the core at once. */
+.Ln_job:
+	[--sp] = rets;
+	r7 = r2;
+	r6 = 0;
+	r5 = [fp + N_X0P];
+	r0 = [fp + N_DMA];
+	cc = r0 == 0;
+	if cc jump .Ln_job_core;
+.Ln_job_move:
+	r0 = [fp + N_JOBP];
+	r1 = r6;
+	r2 = r5;
+	call _bvb_dma_move;
+	r5 += -24;
+	r6 += 1;
+	cc = r6 < r7;
+	if cc jump .Ln_job_move;
+	r0 = [fp + N_JOBP];
+	r1 = r7;
+	call _bvb_dma_start;
+	rets = [sp++];
+	rts;
+.Ln_job_core:
+	/* P0, P1, P2 = the transfer's source, destination, width: a word at a time */
+	p2 = r5;
+	p0 = [p2 + DMAX_SRC];
+	p1 = [p2 + DMAX_DST];
+	p2 = [p2 + DMAX_W];
+	p2 = p2 >> 2;
+	lsetup (.Ln_cp, .Ln_cp_end) lc0 = p2;
+.Ln_cp:
+	r0 = [p0++];
+.Ln_cp_end:
+	[p1++] = r0;
+	r5 += -24;
+	r6 += 1;
+	cc = r6 < r7;
+	if cc jump .Ln_job_core;
+	rets = [sp++];
+	rts;
+	.size _bvb_hs_iterate_n_asm, . - _bvb_hs_iterate_n_asm
 
 /* ---------------------------------------------------------------------------------------------
  * bvb_hs_prepare_asm(i1, i2, width, height, stride, alpha2_q4, coef)

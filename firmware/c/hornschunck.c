@@ -177,6 +177,17 @@ static inline void iterate_pixel(const int16_t *top, const int16_t *mid, const i
   out[1] = (int16_t)sat16(round_even(acc_v - e * gy, 16));
 }
 
+/* One output row from the input rows above (top), at (mid) and below (bot), clamped. */
+static void iterate_row(const int16_t *top, const int16_t *mid, const int16_t *bot,
+                        const int16_t *g, int16_t *out, int32_t width) {
+  const int16_t *t = g + 2 * width;
+  const int32_t last = 2 * (width - 1);
+  iterate_pixel(top, mid, bot, 0, 0, width > 1 ? 2 : 0, g, t[0], out);
+  for (int32_t x = 1; x < width - 1; ++x)
+    iterate_pixel(top, mid, bot, 2 * x - 2, 2 * x, 2 * x + 2, g + 2 * x, t[x], out + 2 * x);
+  if (width > 1) iterate_pixel(top, mid, bot, last - 2, last, last, g + last, t[width - 1], out + last);
+}
+
 void bvb_hs_iterate_c(const int16_t *coef, const int16_t *uv_in, int32_t in_stride,
                       int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height) {
   const int32_t pitch = BVB_HS_COEF_PITCH(width);
@@ -186,14 +197,41 @@ void bvb_hs_iterate_c(const int16_t *coef, const int16_t *uv_in, int32_t in_stri
     const int16_t *mid = (const int16_t *)((const uint8_t *)uv_in + y * in_stride);
     const int16_t *bot = (const int16_t *)((const uint8_t *)uv_in + yp * in_stride);
     int16_t *out = (int16_t *)((uint8_t *)uv_out + y * out_stride);
-    const int16_t *g = coef + y * pitch;
-    const int16_t *t = g + 2 * width;
-    const int32_t last = 2 * (width - 1);
-    iterate_pixel(top, mid, bot, 0, 0, width > 1 ? 2 : 0, g, t[0], out);
-    for (int32_t x = 1; x < width - 1; ++x)
-      iterate_pixel(top, mid, bot, 2 * x - 2, 2 * x, 2 * x + 2, g + 2 * x, t[x], out + 2 * x);
-    if (width > 1) iterate_pixel(top, mid, bot, last - 2, last, last, g + last, t[width - 1],
-                                 out + last);
+    iterate_row(top, mid, bot, coef + y * pitch, out, width);
+  }
+}
+
+/* The definition: `iterations` Jacobi iterations one after the other, each exactly
+ * bvb_hs_iterate_c. The first goes uv_in -> uv_out; each later one is done in place in uv_out,
+ * with copies of the input rows it overwrites (row y - 1 and row y, in two rows of the flow
+ * scratch) taken before the output row replaces them, so every output pixel still reads the
+ * previous iteration's field. */
+void bvb_hs_iterate_n_c(const int16_t *coef, const int16_t *uv_in, int32_t in_stride,
+                        int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height,
+                        int32_t iterations, void *flow_scratch, void *coef_scratch) {
+  (void)coef_scratch; /* the assembly's coefficient rows */
+  const int32_t pitch = BVB_HS_COEF_PITCH(width);
+  int16_t *saved[2];
+  saved[0] = (int16_t *)flow_scratch;
+  saved[1] = saved[0] + 2 * width;
+  if (iterations < 1) return;
+  bvb_hs_iterate_c(coef, uv_in, in_stride, uv_out, out_stride, width, height);
+  for (int32_t n = 1; n < iterations; ++n) {
+    int16_t *above = saved[0], *here = saved[1];
+    for (int32_t x = 0; x < 2 * width; ++x) here[x] = uv_out[x];
+    for (int32_t y = 0; y < height; ++y) {
+      int16_t *row = (int16_t *)((uint8_t *)uv_out + y * out_stride);
+      const int16_t *below = y + 1 < height ? (const int16_t *)((uint8_t *)row + out_stride) : here;
+      int16_t *spare;
+      iterate_row(y > 0 ? above : here, here, below, coef + y * pitch, row, width);
+      /* here (row y's input) becomes the row above; row y + 1's input is copied before the
+       * next output row overwrites it */
+      spare = above;
+      above = here;
+      here = spare;
+      if (y + 1 < height)
+        for (int32_t x = 0; x < 2 * width; ++x) here[x] = below[x];
+    }
   }
 }
 

@@ -1,8 +1,11 @@
 // Check, bench and run for bvb/hornschunck.h: hs_prepare (derivatives and coefficients),
-// hs_iterate (one Jacobi iteration) and hornschunck (prepare plus N iterations).
+// hs_iterate (one Jacobi iteration), hs_iterate_n (N iterations, fused) and hornschunck
+// (prepare plus N iterations).
 //
 // Bench cases: hs_prepare and hs_iterate are one call on a w x h frame (c/px per frame pixel;
-// hs_iterate is one iteration). hornschunck runs N = 10 iterations, and its c/px is per frame
+// hs_iterate is one iteration). hs_iterate_n runs N = 10 iterations in one call, and its c/px is
+// per frame pixel per iteration (the call's cycles over 10 w h), as the case name
+// "WxH N=10, per iteration" says. hornschunck runs N = 10 iterations, and its c/px is per frame
 // pixel for the whole call (prepare + 10 iterations), as the case name "WxH N=10" says.
 #include "bvb/hornschunck.h"
 
@@ -266,6 +269,30 @@ CheckCall iterate_call(int w, int h, const std::vector<int16_t> &coef, const std
   return c;
 }
 
+// hs_iterate_n: the flow rows' and the coefficient rows' scratches are buffers 3 and 4.
+CheckCall iterate_n_call(int w, int h, const std::vector<int16_t> &coef, const std::vector<int16_t> &uv,
+                         int in_stride, int out_stride, int iterations, const std::string &name) {
+  CheckCall c;
+  c.kernel = "hs_iterate_n";
+  c.case_name = name;
+  c.pixels = double(w) * h * iterations;  // cycles per pixel per iteration
+  c.cycle_limit = kLongCallLimit;
+  const int pitch = BVB_HS_COEF_PITCH(w);
+  int ic = c.in("coef", as_bytes(coef), {2, true, pitch, h, pitch});
+  int iu = c.in("uv_in", as_bytes(uv), {2, true, 2 * w, h, in_stride / 2});
+  int io = c.out("uv_out", size_t(out_stride) * (h - 1) + 4 * size_t(w), {2, true, 2 * w, h, out_stride / 2, 2});
+  int fs = c.scratch("flow_scratch", BVB_HS_ITER_FLOW_SCRATCH_BYTES(w));
+  int cs = c.scratch("coef_scratch", BVB_HS_ITER_COEF_SCRATCH_BYTES(w));
+  c.buf(ic).buf(iu).word(in_stride).buf(io).word(out_stride).word(w).word(h).word(iterations);
+  c.buf(fs).buf(cs);
+  c.host = [=](HostBuffers &m) {
+    bvb_hs_iterate_n_c(m.s16(ic), m.s16(iu), in_stride, m.s16(io), out_stride, w, h, iterations, m.u8(fs),
+                       m.u8(cs));
+  };
+  return c;
+}
+constexpr int kIterFlowScratch = 3, kIterCoefScratch = 4;
+
 CheckCall full_call(int w, int h, int stride, const FramePair &p, int32_t alpha2, int iterations,
                     int out_stride, const std::string &name) {
   CheckCall c;
@@ -366,6 +393,38 @@ void check(Checker &ck) {
       }
   }
   {
+    // hs_iterate_n: iteration counts below, at and above the levels of one pass (1 to 8 by
+    // width: BVB_HS_ITER_LEVELS), so that passes of every length and heights smaller than a
+    // pass's levels occur; half the calls as the robot runs it (frames in SDRAM, the flow rows'
+    // scratch in L1 bank B and the coefficient rows' in bank A: the DMA path), half placed at
+    // random (the core's copies wherever DMA does not reach).
+    std::vector<Size> nsizes = small;
+    for (Size s : sizes) nsizes.push_back(s);
+    static const Size extra[] = {{2, 2}, {3, 9}, {160, 7}, {161, 13}, {320, 5}, {319, 11}, {640, 4}, {341, 3}};
+    for (Size s : extra) nsizes.push_back(s);
+    for (Size s : nsizes) {
+      std::string cn, fn;
+      const std::vector<int16_t> coef = make_coef(s.w, s.h, rng, ck, &cn);
+      const int is = flow_stride(s.w, rng), os = flow_stride(s.w, rng);
+      const std::vector<int16_t> uv = make_flow(s.w, s.h, is, rng, &fn);
+      static const int counts[] = {1, 2, 3, 4, 5, 7, 8, 9, 10, 17};
+      int n = counts[rng.uniform(0, 9)];
+      if (double(s.w) * s.h > 40000) n = std::min(n, 3);
+      CheckCall c = iterate_n_call(s.w, s.h, coef, uv, is, os, n,
+                                   size_name(s.w, s.h) + " strides " + std::to_string(is) + "/" +
+                                       std::to_string(os) + " " + cn + " " + fn + " N=" + std::to_string(n));
+      if (rng.uniform(0, 1) == 0) {
+        for (auto &b : c.bufs) b.skew = 0;
+        c.bufs[kIterFlowScratch].place = BVB_PLACE_L1B;
+        c.bufs[kIterCoefScratch].place = BVB_PLACE_L1A;
+        c.case_name += " frames SDRAM";
+      } else {
+        place(ck, c, rng);
+      }
+      ck.add(std::move(c));
+    }
+  }
+  {
     for (Size s : sizes)
       for (int k = 0; k < int(PairKind::Count); ++k) {
         if (skip(k)) continue;
@@ -401,6 +460,17 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
     for (auto &v : uv) v = int16_t(rng.uniform(-1024, 1024));
     return iterate_call(w, h, coef, uv, 4 * w, 4 * w, size_name(w, h));
   }
+  if (kernel == "hs_iterate_n") {
+    std::vector<int16_t> coef(BVB_HS_COEF_BYTES(w, h) / 2);
+    bvb_hs_prepare_c(p.f1.data(), p.f2.data(), w, h, w, 1024, coef.data(), nullptr);
+    std::vector<int16_t> uv(size_t(2) * w * h);
+    for (auto &v : uv) v = int16_t(rng.uniform(-1024, 1024));
+    CheckCall c = iterate_n_call(w, h, coef, uv, 4 * w, 4 * w, kBenchIterations,
+                                 size_name(w, h) + " N=" + std::to_string(kBenchIterations) + ", per iteration");
+    c.bufs[kIterFlowScratch].place = BVB_PLACE_L1B;  // coefficients and flow in SDRAM
+    c.bufs[kIterCoefScratch].place = BVB_PLACE_L1A;
+    return c;
+  }
   return full_call(w, h, w, p, 1024, kBenchIterations, 4 * w,
                    size_name(w, h) + " N=" + std::to_string(kBenchIterations));
 }
@@ -414,9 +484,26 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
 //   hornschunck = 1 (zeroing the start flow: a store per pixel) + prepare + 10 per iteration.
 // prepare's bus bound with the frames and coefficients in SDRAM is lower: 2 bytes in and 6 out
 // per pixel at 0.5 byte per core cycle (bvb/dma.h) is 16.
+// hs_iterate_n (frames in SDRAM): per pass of L fused levels (bvb/hornschunck.h: FUSED
+// ITERATIONS; N = 10 at 160 and 320 wide is two passes of 5, at 640 five of 2) the larger of
+// the compute, 10 L, and the bus, 14 bytes a pixel (6 coefficients and 4 flow in, 4 flow out)
+// at 0.5 byte a cycle, 28: 100 per pixel for the 10 iterations at 160 and 320, 140 at 640
+// (bus-bound); the bench's c/px divides it by the 10 iterations (10.0, 10.0, 14.0).
+double iterate_n_bound(int w, int iterations) {
+  const int lmax = BVB_HS_ITER_LEVELS(w);
+  double c = 0;
+  for (int left = iterations; left > 0;) {
+    const int passes = (left + lmax - 1) / lmax, l = (left + passes - 1) / passes;
+    c += std::max(10.0 * l, 28.0);
+    left -= l;
+  }
+  return c;
+}
+
 double lower_bound(const std::string &kernel, int w, int h) {
   const double px = double(w) * h;
   if (kernel == "hs_iterate") return 10 * px;
+  if (kernel == "hs_iterate_n") return iterate_n_bound(w, kBenchIterations) * px;
   if (kernel == "hs_prepare") return 17 * px;
   if (kernel == "hornschunck") return (1 + 17 + 10.0 * kBenchIterations) * px;
   return 0;
@@ -454,7 +541,7 @@ RunPlan plan_run(RunRequest &req) {
   return plan;
 }
 
-const Family kHornSchunck{"hornschunck", {"hs_prepare", "hs_iterate", "hornschunck"}, check, bench_call,
+const Family kHornSchunck{"hornschunck", {"hs_prepare", "hs_iterate", "hs_iterate_n", "hornschunck"}, check, bench_call,
                           lower_bound, plan_run};
 BVB_FAMILY(kHornSchunck);
 

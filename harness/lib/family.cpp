@@ -85,6 +85,7 @@ const SizeRule *bench_size_rule(const std::string &kernel) {
       {"free_space", {1, 1, false}},
       {"hs_prepare", {BVB_HS_MIN_DIM, BVB_HS_MIN_DIM, false}},
       {"hs_iterate", {BVB_HS_MIN_DIM, BVB_HS_MIN_DIM, false}},
+      {"hs_iterate_n", {BVB_HS_MIN_DIM, BVB_HS_MIN_DIM, false}},
       {"hornschunck", {BVB_HS_MIN_DIM, BVB_HS_MIN_DIM, false}},
       // Whole-pipeline frames: the avoidance pipelines bench only at 160x120 and 320x240 and
       // skip other sizes; odometry renders a UYVY scene at any even size from 16x16.

@@ -80,12 +80,15 @@
  *   flow out), 8 during prepare (2 frame + 6 coefficients). 160x120: 263 KB, more than the 64 KB
  *   of L1 data, so whole frames live in SDRAM at every size; L1 holds row bands streamed by DMA:
  *   one iteration needs 3 input flow rows + 1 coefficient row + 1 output row = 22 bytes x width
- *   (3.5 KB at 160, 14 KB at 640; twice that double-buffered). Doing all N iterations in one
- *   pass down the frame (iteration n works 1 row behind iteration n-1) needs about
- *   18 x width x N bytes: 29 KB at 160x120 with N = 10, which fits L1 and leaves only the frames
- *   and the final flow in SDRAM. bvb_hs_prepare_asm streams its rows so (the frames' rows in,
- *   the coefficient rows out, through BVB_HS_PREPARE_SCRATCH_BYTES of L1); the iterations do not
- *   yet.
+ *   (3.5 KB at 160, 14 KB at 640; twice that double-buffered), and alone it is bus-bound: 14
+ *   bytes a pixel at 0.5 byte a cycle is 28 cycles, against 10 of compute. Doing L iterations in
+ *   one pass down the frame (level k works 1 row behind level k-1) needs 18 (L + 1) width bytes
+ *   (FUSED ITERATIONS above: bvb_hs_iterate_n_asm, 12 (L + 1) width of flow rows, (L + 1)
+ *   coefficient rows) and moves the 14 bytes once for the L: 28 / L cycles an iteration, under
+ *   the compute from L = 3. bvb_hs_prepare_asm streams its rows too (the frames' rows in, the
+ *   coefficient rows out, through BVB_HS_PREPARE_SCRATCH_BYTES of L1); bvb_hs_iterate_asm (one
+ *   iteration) and bvb_hornschunck_asm (whose one scratch holds frame-sized buffers) read and
+ *   write the frames where they are.
  *
  * ASSEMBLY PLAN (BF537; one 32-bit ALU/MAC instruction per cycle plus two loads or one load and
  *   one store in parallel; counts are issue slots per pixel, loads ride in the parallel slots).
@@ -155,6 +158,29 @@ extern "C" {
 #define BVB_HS_PREPARE_SCRATCH_BYTES(w)                                                      \
   (BVB_STREAM_SCRATCH_BYTES((w), (w), 2 * BVB_HS_COEF_PITCH(w)) + 8 * (w))
 
+/* FUSED ITERATIONS (bvb_hs_iterate_n_asm). Iteration level k of row y needs level k-1 of rows
+ * y-1..y+1 and coefficient row y, so L levels run one pass down the frame, level k one row behind
+ * level k-1: at step t level k makes row t-k+1. Each level 1..L-1 keeps a ring of 3 rows, the
+ * input (level 0) a ring of 4 (3 read, 1 arriving), the output 2 (1 written, 1 leaving), the
+ * coefficients L+1 (L read, 1 arriving): 12 (L+1) width bytes of flow rows and (L+1) coefficient
+ * rows. A pass moves 14 bytes a pixel through SDRAM once for its L iterations (28 / L cycles a
+ * pixel an iteration at 0.5 byte a cycle). L is the most levels (at most 8) whose flow rows fit
+ * BVB_HS_ITER_L1_BUDGET (22.5 KB: most of the 24 KB that L1 bank B has beside the stack; the
+ * coefficient rows, 11.6 KB at most, go in bank A): 8 at 160 wide, 5 at 320, 2 at 640. n
+ * iterations take ceil(n / L) passes of as equal a number of levels as they can (10 at 160 and
+ * 320 wide: 5 and 5; at 640, five of 2, bus-bound at 14 cycles a pixel an iteration; vertical
+ * tiles with halos would let wider frames fuse more levels, not built). Each pass after the
+ * first works in place in uv_out: an input row is in L1 before the output row that replaces it
+ * leaves. */
+#define BVB_HS_ITER_L1_BUDGET 23040
+#define BVB_HS_ITER_MAX_LEVELS 8
+#define BVB_HS_ITER_LEVELS(w)                                                                \
+  (BVB_HS_ITER_L1_BUDGET / (12 * (w)) - 1 > BVB_HS_ITER_MAX_LEVELS ? BVB_HS_ITER_MAX_LEVELS  \
+   : BVB_HS_ITER_L1_BUDGET / (12 * (w)) - 1 < 1                    ? 1                       \
+                                                                   : BVB_HS_ITER_L1_BUDGET / (12 * (w)) - 1)
+#define BVB_HS_ITER_FLOW_SCRATCH_BYTES(w) (12 * (w) * (BVB_HS_ITER_LEVELS(w) + 1))
+#define BVB_HS_ITER_COEF_SCRATCH_BYTES(w) (2 * BVB_HS_COEF_PITCH(w) * (BVB_HS_ITER_LEVELS(w) + 1))
+
 /* rsqrt mantissas used by prepare (1536 bytes; the assembly reads the same table). */
 extern const int16_t bvb_hs_rsqrt_table[BVB_HS_RSQRT_ENTRIES];
 
@@ -176,6 +202,21 @@ void bvb_hs_iterate_c(const int16_t *coef, const int16_t *uv_in, int32_t in_stri
                       int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height);
 void bvb_hs_iterate_asm(const int16_t *coef, const int16_t *uv_in, int32_t in_stride,
                         int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height);
+
+/* `iterations` (>= 1; fewer: nothing is written) Jacobi iterations uv_in -> uv_out, exactly
+ * those of as many bvb_hs_iterate calls ping-ponging two buffers (uv_in is left as it was).
+ * The assembly fuses them (FUSED ITERATIONS below): up to BVB_HS_ITER_LEVELS(width) in one pass
+ * down the frame, the intermediate rows in flow_scratch, the coefficient rows in coef_scratch.
+ * flow_scratch: BVB_HS_ITER_FLOW_SCRATCH_BYTES(width) bytes, coef_scratch:
+ * BVB_HS_ITER_COEF_SCRATCH_BYTES(width) bytes, both 4-byte aligned (the C reference uses two
+ * rows of flow_scratch). With the frames in SDRAM and the scratches in DMA-reachable L1 the rows
+ * move by memory DMA, double-buffered; elsewhere the core copies them. */
+void bvb_hs_iterate_n_c(const int16_t *coef, const int16_t *uv_in, int32_t in_stride,
+                        int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height,
+                        int32_t iterations, void *flow_scratch, void *coef_scratch);
+void bvb_hs_iterate_n_asm(const int16_t *coef, const int16_t *uv_in, int32_t in_stride,
+                          int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height,
+                          int32_t iterations, void *flow_scratch, void *coef_scratch);
 
 /* Prepare plus `iterations` (>= 0) iterations from zero flow; the result is in uv_out.
  * scratch: BVB_HS_SCRATCH_BYTES(width, height) bytes, 4-byte aligned. */
