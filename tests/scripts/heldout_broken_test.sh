@@ -6,8 +6,8 @@
 #     never turns away from a stall (avoidance off)
 #   flow_avoid thresh_q9=4000 stall_q9=0 stall_turn_frames=1: no flow is ever too much, and a
 #     stall (the view still while the wheels turn) turns one frame away (avoidance off)
-#   odometry band_y0=96 band_rows=24: the rotation's profile on the floor just ahead, which the
-#     robot's own forward motion drags
+#   odometry rot_feat=0: the rotation from the scan-line profile alone, which drifts on
+#     straight legs (the floor features' rotation off)
 set -uo pipefail
 bfbench=${1:?usage: heldout_broken_test.sh BFBENCH [options]}
 shift
@@ -29,7 +29,7 @@ run_broken() {
 
 run_broken seg_avoid "$@" --param go_rows=0 --param stall_frames=1000000
 run_broken flow_avoid "$@" --param thresh_q9=4000 --param stall_q9=0 --param stall_turn_frames=1
-run_broken odometry "$@" --param band_y0=96 --param band_rows=24
+run_broken odometry "$@" --param rot_feat=0
 
 # Bad input: one line, exit 2.
 "$bfbench" heldout --seed x >/dev/null 2>&1; [ $? -eq 2 ] || fail "--seed x: want exit 2"
