@@ -802,7 +802,7 @@ static int32_t lateral_fit(const struct odo_lateral *l, int32_t m, int32_t tol, 
     sd += l->den[i];
     ++k;
   }
-  if (k > 0 && sd > 0) *da = div_round(sl << 30, sd);
+  if (k > 0 && sd > 0) *da = div_round(sl * ((int64_t)1 << 30), sd);
   return k;
 }
 

@@ -96,7 +96,8 @@ const char *kHelp =
     "  odometry: --runs polygons (default 10), vision alone unless --param fuse=1; passes when\n"
     "      the 90th percentiles (nearest rank) of the final heading error and the final position\n"
     "      error per 100 in driven are within their limits.\n"
-    "--run K runs only scene K (0-based) of each pipeline; --save DIR writes each scene's arena\n"
+    "--frames also cuts each odometry loop, with --builds-only only. --run K runs only scene K\n"
+    "(0-based) of each pipeline; --save DIR writes each scene's arena\n"
     "file there and prints the bfbench pipeline command that replays it. --impl is host by\n"
     "default (every build computes the same frames: --compare-host checks it). --builds-only\n"
     "(implies --compare-host) judges only that: a few scenes on the simulator say little about a\n"
@@ -176,7 +177,8 @@ struct Context {
   SceneSpec base;
 };
 
-PipelineRun run_scene(const Context &c, const PipelineDef &def, const HeldoutScene &s, bool closed_loop) {
+PipelineRun run_scene(const Context &c, const PipelineDef &def, const HeldoutScene &s, bool closed_loop,
+                      int max_frames = 0) {
   SceneGenerator gen(s.spec, s.arena);
   Params params;
   for (const auto &p : c.o.params) params.set(p);
@@ -184,6 +186,7 @@ PipelineRun run_scene(const Context &c, const PipelineDef &def, const HeldoutSce
   ro.impl = c.o.impl;
   ro.compare_host = c.o.compare_host;
   ro.closed_loop = closed_loop;
+  ro.max_frames = max_frames;
   ro.progress = isatty(2) != 0;
   return run_pipeline(def, c.target, nullptr, &gen, params, ro);
 }
@@ -260,7 +263,8 @@ bool judge_odometry(const Context &c) {
   for (int k = 0; k < runs; ++k) {
     if (c.o.only_run >= 0 && k != c.o.only_run) continue;
     const HeldoutScene s = heldout_odometry_scene(c.seed, k, c.base);
-    const PipelineRun run = run_scene(c, *def, s, false);
+    // --frames cuts a loop only where nothing but the builds' equality is judged.
+    const PipelineRun run = run_scene(c, *def, s, false, c.o.builds_only ? c.o.frames : 0);
     const FrameRecord &last = run.frames.back();
     OdoLoop l;
     l.length_in = s.polygon.length_in();
@@ -327,6 +331,9 @@ int heldout_command(int argc, char **argv) {
     for (const auto &p : o.pipelines)
       if (p != "seg_avoid" && p != "flow_avoid" && p != "odometry")
         throw InputError("unknown pipeline '" + p + "' (seg_avoid, flow_avoid or odometry)");
+    if (o.frames && !o.builds_only && std::find(o.pipelines.begin(), o.pipelines.end(), "odometry") != o.pipelines.end())
+      throw InputError("--frames would cut the odometry's loops, which are judged whole: give it with --builds-only, "
+                       "or for seg_avoid and flow_avoid alone");
     if (o.builds_only && o.impl == "host") throw InputError("--builds-only compares a Blackfin build: give --impl c or asm");
     if (!o.params.empty() && o.pipelines.size() != 1) throw InputError("--param needs exactly one PIPELINE");
     if (o.only_run >= 0 && o.only_run >= scene_count(o, o.pipelines[0] == "odometry" ? kOdometryLoops : kAvoidScenes))
