@@ -5,6 +5,7 @@
 
 #include "flow/hs_accuracy_cli.h"
 #include "pipeline/runner.h"
+#include "pipelines/heldout.h"
 #include "scene/scene_cli.h"
 
 namespace bvb {
@@ -18,6 +19,7 @@ struct ExtraCommand {
 static const ExtraCommand kCommands[] = {
     {"scene", "generate a synthetic scene with ground truth (or check one)", scene_command},
     {"pipeline", "run a vision pipeline frame by frame (bfbench pipeline --help)", pipeline_command},
+    {"heldout", "the pipelines on scenes drawn afresh from a printed seed, judged on rates", heldout_command},
     {"hs-accuracy", "Horn-Schunck fixed point vs double vs ground truth (EPE, AE)", hs_accuracy_command},
 };
 

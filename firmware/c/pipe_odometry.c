@@ -158,7 +158,8 @@ struct odo_setup {
   uint32_t s_table, s_profile, s_frame, s_frame_bytes, s_pyr, s_total;
   /* work offsets */
   uint32_t x_profile, x_bins, x_pscratch, x_result, x_curve, x_pyr, x_points,
-      x_nres, x_nscr, x_map, x_pairs, x_d, x_e, x_sort, x_resp, x_cand, x_corners, x_total;
+      x_nres, x_nscr, x_map, x_pairs, x_d, x_e, x_sort, x_resp, x_cand, x_corners, x_floor, x_fsort,
+      x_fwd, x_fkeep, x_total;
   /* fast offsets: the job, then the tracker's buffers (f_lk*) and this frame's pyramid, and
    * over the same bytes later the Harris stages' (f_hscr .. f_strip) */
   uint32_t f_job, f_lkin, f_lkout, f_lkscr, f_pscratch, f_hscr, f_nmsscr, f_save, f_strip, f_pyr, f_total;
@@ -203,6 +204,8 @@ static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_par
   if (!in_range(p->inlier_tol, 0, 64 * Q16) || !in_range(p->min_inliers, 1, BVB_ODO_MAX_FEATURES)) return;
   if (!in_range(p->tpi, 256, 1 << 24) || !in_range(p->wheelbase, Q16 / 16, 256 * Q16)) return;
   if (p->fuse_rot_tol < 0 || p->fuse_trans_tol < 0 || p->fuse_window < 1) return;
+  if (!in_range(p->rot_feat, 0, 1) || !in_range(p->rot_small, 0, 90 * Q16)) return;
+  if (!in_range(p->rot_min_inliers, 2, BVB_ODO_MAX_FEATURES) || !in_range(p->rot_sel_tol, 0, 64 * Q16)) return;
 
   int32_t c30, s30;
   bvb_odo_sincos(p->tilt, &c30, &s30);
@@ -346,6 +349,10 @@ static void setup(int32_t w, int32_t h, int32_t stride, const struct bvb_odo_par
   if (!s->strip_rows) o += 4 * W * (uint32_t)s->hreg;
   s->x_cand = o, o += 8 * ((uint32_t)BVB_HARRIS_NMS_CAPACITY(w, s->hreg) + 1);
   s->x_corners = o, o += 12 * M;
+  s->x_floor = o, o += 16 * M;
+  s->x_fsort = o, o += 4 * M;
+  s->x_fwd = o, o += 4 * M;
+  s->x_fkeep = o, o += ALIGN4(M);
   s->x_total = o;
   s->ok = 1;
 }
@@ -625,6 +632,22 @@ static int32_t harris_strips(const struct bvb_odo_kernels *ops, const struct bvb
                                (int32_t *)(fx + s->f_strip));
 }
 
+/* The tracked pairs (Q8 pixels, 4 words each) on the floor: P in the previous frame's robot
+ * frame, Q in this one's, Q16 inches, 4 words per point (P.F, P.L, Q.F, Q.L). Returns the
+ * count. */
+static int32_t floor_points(const struct bvb_odo_params *p, const struct odo_setup *s, const int32_t *pairs,
+                            int32_t n, int32_t *pq) {
+  const int64_t far = 2 * (int64_t)p->max_range;
+  int32_t m = 0;
+  for (int32_t i = 0; i < n; ++i) {
+    int32_t *o = pq + 4 * m;
+    if (!to_floor(p, s, pairs[4 * i], pairs[4 * i + 1], far, &o[0], &o[1])) continue;
+    if (!to_floor(p, s, pairs[4 * i + 2], pairs[4 * i + 3], far, &o[2], &o[3])) continue;
+    ++m;
+  }
+  return m;
+}
+
 /* What one frame computes before it is committed to the state. */
 struct odo_frame {
   int32_t shift, t, dth_vis, dth_enc, dth, motion, flags;
@@ -637,18 +660,14 @@ struct odo_frame {
 /* Stage 5: the floor motion of the tracked points, the robust forward estimate, the
  * translation's fusion and the pose. */
 static void estimate(const struct bvb_odo_params *p, const struct odo_setup *s, const struct odo_state *st,
-                     uint8_t *x, struct odo_frame *f) {
-  const int32_t *pairs = (const int32_t *)(x + s->x_pairs);
+                     uint8_t *x, struct odo_frame *f, const int32_t *pq, int32_t npq) {
   int32_t c30, s30, ch, sh;
   bvb_odo_sincos(f->motion, &c30, &s30);
   bvb_odo_sincos(f->motion / 2, &ch, &sh);
   int32_t *dv = (int32_t *)(x + s->x_d), *ev = (int32_t *)(x + s->x_e), *srt = (int32_t *)(x + s->x_sort);
-  const int64_t far = 2 * (int64_t)p->max_range;
   int32_t m = 0;
-  for (int32_t i = 0; i < f->tracked; ++i) {
-    int32_t Fp, Lp, Fq, Lq;
-    if (!to_floor(p, s, pairs[4 * i], pairs[4 * i + 1], far, &Fp, &Lp)) continue;
-    if (!to_floor(p, s, pairs[4 * i + 2], pairs[4 * i + 3], far, &Fq, &Lq)) continue;
+  for (int32_t i = 0; i < npq; ++i) {
+    const int32_t Fp = pq[4 * i], Lp = pq[4 * i + 1], Fq = pq[4 * i + 2], Lq = pq[4 * i + 3];
     /* T = P - R(dtheta) Q, then along and across the chord */
     const int32_t tx = Fp - (int32_t)shr_round((int64_t)c30 * Fq - (int64_t)s30 * Lq, 30);
     const int32_t ty = Lp - (int32_t)shr_round((int64_t)s30 * Fq + (int64_t)c30 * Lq, 30);
@@ -705,7 +724,21 @@ static void rotation(const struct bvb_odo_kernels *ops, const struct bvb_odo_par
   f->dfwd_enc = (int32_t)div_round((int64_t)(dl + dr) * ((int64_t)1 << 23), p->tpi);
   f->dth_enc = enc_angle(dl, dr, p);
   f->dth = f->motion = f->dth_vis;
+}
+
+/* Stage 5: the rotation's fusion with the encoders, on the visual rotation chosen (the
+ * profile's or the floor features'). */
+static void fuse_rotation(const struct bvb_odo_params *p, const struct odo_state *st, int32_t left, int32_t right,
+                          struct odo_frame *f) {
+  f->dth = f->motion = f->dth_vis;
   if (!p->fuse) return;
+  /* The floor features' rotation is not dragged by what moves in the band, and the encoders'
+   * slip would only make it worse: their frames keep it and start a new window, so the
+   * window test spans the profile's frames alone. */
+  if (f->flags & BVB_ODO_F_ROT_FEAT) {
+    f->win_restart = 1;
+    return;
+  }
   if (iabs(f->dth_vis - f->dth_enc) > p->fuse_rot_tol) {
     f->dth = f->motion = f->dth_enc;
     f->flags |= BVB_ODO_F_ROT_ENC;
@@ -718,6 +751,129 @@ static void rotation(const struct bvb_odo_kernels *ops, const struct bvb_odo_par
     f->flags |= BVB_ODO_F_ROT_ENC | BVB_ODO_F_ROT_WIN;
   }
   f->win_restart = (f->flags & BVB_ODO_F_ROT_ENC) || st->win_age + 1 >= p->fuse_window;
+}
+
+/* ---- the rotation from the floor features (ROTATION FROM THE FLOOR in bvb/pipe_odometry.h) ---- */
+
+/* The median of v[0..n) (n > 0), sorting tmp. */
+static int32_t median_i32(const int32_t *v, int32_t n, int32_t *tmp) {
+  for (int32_t i = 0; i < n; ++i) tmp[i] = v[i];
+  sort_i32(tmp, n);
+  return tmp[n / 2];
+}
+
+/* The rotation's remainder from the points' sideways motion. With this frame's motion a turn
+ * by a and d forward along the chord, a floor point obeys P = R(a) Q + d (cos a/2, sin a/2);
+ * about a0 = a - da, with Q' = R(a0) Q: P.L - Q'.L - d sin(a0 / 2) = da (Q'.F + d / 2) to first
+ * order in da. Each point's ratio da_i has about the same error (the sideways error of a floor
+ * point grows with its distance, as the ratio's denominator does), so the points are weighed
+ * alike by da = sum lat_i / sum den_i, where lat_i, den_i are those two sides. */
+struct odo_lateral {
+  int32_t *lat, *den, *fwd;  /* per point: the sideways motion left, the denominator, P.F - Q'.F */
+};
+
+/* Fills l for the rotation a0 (Q16 degrees); returns d, the median of P.F - Q'.F (Q16 inches). */
+static int32_t lateral_motion(const int32_t *pq, int32_t m, int32_t a0, const struct odo_lateral *l,
+                              int32_t *tmp) {
+  int32_t c30, s30, ch, sh;
+  bvb_odo_sincos(a0, &c30, &s30);
+  bvb_odo_sincos(a0 / 2, &ch, &sh);
+  for (int32_t i = 0; i < m; ++i) {
+    const int32_t *q = pq + 4 * i;
+    const int32_t qf = (int32_t)shr_round((int64_t)c30 * q[2] - (int64_t)s30 * q[3], 30);
+    const int32_t ql = (int32_t)shr_round((int64_t)s30 * q[2] + (int64_t)c30 * q[3], 30);
+    l->fwd[i] = q[0] - qf;
+    l->lat[i] = q[1] - ql;
+    l->den[i] = qf;
+  }
+  const int32_t d = median_i32(l->fwd, m, tmp);
+  const int32_t dsin = (int32_t)shr_round((int64_t)d * sh, 30);
+  for (int32_t i = 0; i < m; ++i) {
+    l->lat[i] -= dsin;
+    l->den[i] += d / 2;
+    l->fwd[i] -= d;
+  }
+  return d;
+}
+
+/* The points that agree with the remainder da (Q30 radians, so that each prediction is a
+ * product): forward within tol of the median, sideways within tol of da's prediction. Sets
+ * keep; returns how many, and da's new value over them in *da (unchanged when none, or when
+ * their denominators are not positive): one division. */
+static int32_t lateral_fit(const struct odo_lateral *l, int32_t m, int32_t tol, uint8_t *keep, int64_t *da) {
+  int64_t sl = 0, sd = 0;
+  int32_t k = 0;
+  /* The prediction only selects, against a tolerance of a tenth of an inch or more: 32-bit
+   * products do, da in Q16 radians (clamped to 1/8 radian, 7 degrees, beyond any rotation the
+   * features measure) times den in Q8 inches (below 2^17: to_floor's points lie within 2
+   * max_range, 512 in), within a thousandth of an inch at 24 in. */
+  int64_t d16 = shr_round(*da, 14);
+  if (d16 > 8192) d16 = 8192;
+  if (d16 < -8192) d16 = -8192;
+  for (int32_t i = 0; i < m; ++i) {
+    const int32_t pred = ((int32_t)d16 * (l->den[i] >> 8)) >> 8;
+    keep[i] = (uint8_t)(iabs(l->fwd[i]) <= tol && iabs(l->lat[i] - pred) <= tol && l->den[i] > 0);
+    if (!keep[i]) continue;
+    sl += l->lat[i];
+    sd += l->den[i];
+    ++k;
+  }
+  if (k > 0 && sd > 0) *da = div_round(sl * ((int64_t)1 << 30), sd);
+  return k;
+}
+
+/* The median of the points' ratios lat_i / den_i (Q16 degrees) over those with den_i at least
+ * 1/16 in; a start for the fit, so 32-bit divisions of 15 or so significant bits do (lat
+ * clamped to 2 in: a point that moved sideways more is an outlier anyway). */
+static int32_t median_ratio(const struct odo_lateral *l, int32_t m, int32_t *tmp) {
+  int32_t n = 0;
+  for (int32_t i = 0; i < m; ++i) {
+    const int32_t d = l->den[i] >> 12;                   /* Q4 inches */
+    if (d < 1) continue;
+    int32_t lat = l->lat[i];
+    if (lat > 2 * Q16) lat = 2 * Q16;
+    if (lat < -2 * Q16) lat = -2 * Q16;
+    tmp[n++] = lat * 16 / d;                             /* Q16 radians, |.| < 2^22 */
+  }
+  if (n == 0) return 0;
+  sort_i32(tmp, n);
+  return (int32_t)shr_round((int64_t)tmp[n / 2] * RAD_Q16DEG, 16);
+}
+
+/* Stage 5's first step: this frame's visual rotation from the floor features when the rule
+ * says so (see the header), else the profile's as stage 2 left it. */
+static void floor_rotation(const struct bvb_odo_params *p, const struct odo_setup *s, uint8_t *x,
+                           struct odo_frame *f, const int32_t *pq, int32_t m) {
+  int32_t *tmp = (int32_t *)(x + s->x_fsort);
+  struct odo_lateral l;
+  l.lat = (int32_t *)(x + s->x_d); /* estimate's, free until then */
+  l.den = (int32_t *)(x + s->x_e);
+  l.fwd = (int32_t *)(x + s->x_fwd);
+  uint8_t *keep = x + s->x_fkeep;
+  if (m < p->rot_min_inliers) return;
+  /* A wide selection about the profile's rotation and the fit, then the inliers' own. */
+  int32_t a0 = f->dth_vis;
+  int64_t da = 0;
+  lateral_motion(pq, m, a0, &l, tmp);
+  int32_t k = lateral_fit(&l, m, p->rot_sel_tol, keep, &da);
+  /* The profile can jump by a degree or more on a straight leg: when fewer than half the
+   * points agree with it, the start is the median of the points' own ratios about no turn at
+   * all (the linear relation holds near the truth, which the features only report when it
+   * is small), and the motion is taken again about that, so that the forward test is not
+   * thrown by the profile. */
+  if (2 * k < m) {
+    lateral_motion(pq, m, 0, &l, tmp);
+    a0 = median_ratio(&l, m, tmp);
+    lateral_motion(pq, m, a0, &l, tmp);
+    da = 0;
+    k = lateral_fit(&l, m, p->rot_sel_tol, keep, &da);
+  }
+  if (k < p->rot_min_inliers) return;
+  if (lateral_fit(&l, m, p->inlier_tol, keep, &da) < p->rot_min_inliers) return;
+  const int32_t a = a0 + (int32_t)shr_round(da * RAD_Q16DEG, 30);
+  if (iabs(a) > p->rot_small) return;
+  f->dth_vis = a;
+  f->flags |= BVB_ODO_F_ROT_FEAT;
 }
 
 int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *frame, int32_t width,
@@ -782,8 +938,14 @@ int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *ops, const uint8_t *
     f.tracked = track(ops, p, &s, st, prev, ppyr ? fx + s.f_ppyr : prev_pyr, frame, pyr, x, fx,
                       (int32_t *)(x + s.x_pairs));
   if (++k >= stages) goto done;
-  /* 5: translation and pose */
-  if (!first) estimate(p, &s, st, x, &f);
+  /* 5: the rotation from the floor features, its fusion, translation and pose */
+  if (!first) {
+    int32_t *pq = (int32_t *)(x + s.x_floor);
+    const int32_t npq = floor_points(p, &s, (const int32_t *)(x + s.x_pairs), f.tracked, pq);
+    if (p->rot_feat) floor_rotation(p, &s, x, &f, pq, npq);
+    fuse_rotation(p, st, left, right, &f);
+    estimate(p, &s, st, x, &f, pq, npq);
+  }
   if (by_dma) ops->copy_wait();
   if (++k >= stages) goto done;
   /* 6, 7: Harris corners of the floor region, for the next frame */

@@ -97,6 +97,10 @@ bvb_odo_params odometry_params(const Camera &cam, Params &params, const Pose &st
   p.fuse_rot_tol = q16(params.get_int("rot_tol", 1000, 0, 360000) / 1000.0);
   p.fuse_trans_tol = q16(params.get_int("trans_tol", 100, 0, 64000) / 1000.0);
   p.fuse_window = params.get_int("fuse_window", 16, 1, 1000000);
+  p.rot_feat = params.get_int("rot_feat", 1, 0, 1);
+  p.rot_small = q16(params.get_int("rot_small", 4500, 0, 90000) / 1000.0);
+  p.rot_min_inliers = params.get_int("rot_min_inliers", 8, 2, BVB_ODO_MAX_FEATURES);
+  p.rot_sel_tol = q16(params.get_int("rot_sel_tol", 250, 0, 64000) / 1000.0);
   if (bvb_pipe_odometry_state_bytes(w, h, w, &p) == 0)
     throw InputError("odometry: parameters out of range for this camera");
   return p;
