@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "bench.h"
+#include "bfbench.h"
 #include "check.h"
 #include "cleanup.h"
 #include "family.h"
@@ -45,7 +46,7 @@ const char *kMainHelp =
     "  check                    C reference (host and Blackfin) vs assembly, bit for bit\n"
     "  bench                    modelled BF537 cycles per call and per pixel, C vs assembly\n"
     "  run KERNEL               one kernel on given frames\n"
-    "  budgets                  compare the bench with ci/budgets.json\n"
+    "  budgets                  compare the bench with the budgets (ci/budgets.json)\n"
     "  profile KERNEL           where one call's modelled cycles go, per source line and loop\n";
 const char *kMainHelpTail =
     "\n"
@@ -464,7 +465,8 @@ int cmd_budgets(Args &args) {
                      "usage: bfbench budgets [--update] [--file FILE] [-k GLOB] [-j N] [--timing none|bf537]\n\n"
                      "Measures every assembly kernel at the sizes its budgets name (and at 160x120,\n"
                      "320x240, 640x480 for kernels without one) and compares with the budgets file\n"
-                     "(default ci/budgets.json). Fails when a kernel exceeds its budget, has none, or\n"
+                     "(default ci/budgets.json; in the bfbench of a family built outside this tree,\n"
+                     "the family's BUDGETS file). Fails when a kernel exceeds its budget, has none, or\n"
                      "a budget names nothing measured. --update rewrites the file atomically with the\n"
                      "measured cycles and prints old -> new for every entry. Budgets are judged under the\n"
                      "timing model the file names (its \"timing\"; none when absent); --update --timing T\n"
@@ -472,7 +474,7 @@ int cmd_budgets(Args &args) {
     return 0;
   const bool update = args.flag("--update");
   const bool timing_given = !args.values_peek("--timing").empty();
-  std::string path = args.value("--file", BVB_SOURCE_DIR "/ci/budgets.json");
+  std::string path = args.value("--file", product().budgets);
   BenchOptions opts;
   opts.kernel_glob = args.value("-k", "*", "--kernel");
   opts.jobs = int(to_long(args.value("-j", std::to_string(default_jobs())), "-j", 1, 256));
@@ -625,7 +627,7 @@ int cmd_profile(Args &args) {
 
 }  // namespace
 
-int main(int argc, char **argv) {
+int bvb::bfbench_main(int argc, char **argv) {
   // An interrupted run removes its window files and kills its simulators.
   bvb::install_interrupt_cleanup();
   if (argc < 2) {

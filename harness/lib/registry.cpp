@@ -1,5 +1,7 @@
 #include "registry.h"
 
+#include <stdexcept>
+
 #include "io.h"
 
 namespace bvb {
@@ -26,10 +28,33 @@ std::vector<KernelInfo> expand_selftest() {
   return k;
 }
 
+// The product, and whether anything has read it yet (set_product is refused after).
+struct ProductState {
+  Product product{"bvb", expand_product(), BVB_FIRMWARE_ELF, BVB_SOURCE_DIR "/ci/budgets.json"};
+  bool read = false;
+};
+
+ProductState &product_state() {
+  static ProductState s;
+  return s;
+}
+
 }  // namespace
 
+const Product &product() {
+  ProductState &s = product_state();
+  s.read = true;
+  return s.product;
+}
+
+void set_product(Product p) {
+  ProductState &s = product_state();
+  if (s.read) throw std::logic_error("set_product after the product was read");
+  s.product = std::move(p);
+}
+
 const Registry &Registry::product() {
-  static const Registry r(expand_product());
+  static const Registry r(bvb::product().kernels);
   return r;
 }
 

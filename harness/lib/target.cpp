@@ -514,7 +514,7 @@ std::string env_or(const char *name, const std::string &fallback) {
 }  // namespace
 
 FirmwareImage product_firmware() {
-  return {env_or("BFBENCH_FIRMWARE", BVB_FIRMWARE_ELF), &Registry::product()};
+  return {env_or("BFBENCH_FIRMWARE", product().elf), &Registry::product()};
 }
 
 FirmwareImage selftest_firmware() {
