@@ -21,7 +21,7 @@ TEST(Product, DefaultIsThisTreesKernelsImageAndBudgets) {
 
 TEST(Product, CannotChangeOnceRead) {
   const size_t n = product().kernels.size();
-  Product other{"other", {{"k", 0, true}}, "/nonexistent.elf", "/nonexistent.json"};
+  Product other{"other", {{"k", 0, true, "k_c", "k_asm"}}, "/nonexistent.elf", "/nonexistent.json"};
   EXPECT_THROW(set_product(other), std::logic_error);
   EXPECT_EQ(product().name, "bvb");
   EXPECT_EQ(product().kernels.size(), n);

@@ -10,8 +10,8 @@ namespace {
 
 std::vector<KernelInfo> expand_product() {
   std::vector<KernelInfo> k;
-#define BVB_KERNEL(name, c_entry, asm_entry) k.push_back({#name, uint32_t(k.size()), true});
-#define BVB_KERNEL_C(name, c_entry) k.push_back({#name, uint32_t(k.size()), false});
+#define BVB_KERNEL(name, c_entry, asm_entry) k.push_back({#name, uint32_t(k.size()), true, #c_entry, #asm_entry});
+#define BVB_KERNEL_C(name, c_entry) k.push_back({#name, uint32_t(k.size()), false, #c_entry, ""});
 #include "kernels.def"
 #undef BVB_KERNEL
 #undef BVB_KERNEL_C
@@ -20,8 +20,8 @@ std::vector<KernelInfo> expand_product() {
 
 std::vector<KernelInfo> expand_selftest() {
   std::vector<KernelInfo> k;
-#define BVB_KERNEL(name, c_entry, asm_entry) k.push_back({#name, uint32_t(k.size()), true});
-#define BVB_KERNEL_C(name, c_entry) k.push_back({#name, uint32_t(k.size()), false});
+#define BVB_KERNEL(name, c_entry, asm_entry) k.push_back({#name, uint32_t(k.size()), true, #c_entry, #asm_entry});
+#define BVB_KERNEL_C(name, c_entry) k.push_back({#name, uint32_t(k.size()), false, #c_entry, ""});
 #include "selftest/selftest.def"
 #undef BVB_KERNEL
 #undef BVB_KERNEL_C

@@ -15,6 +15,7 @@ struct KernelInfo {
   std::string name;
   uint32_t index;
   bool has_asm;
+  std::string c_entry, asm_entry;  // the entries' C names (asm_entry empty for C only)
 };
 
 class Registry {
