@@ -70,7 +70,7 @@ Call case_call(const Target &target, const std::string &case_id, uint32_t seed, 
   const std::vector<const CheckCall *> calls = ck.pending();
   if (calls.empty())
     throw InputError("no call " + case_id + " with seed " + std::to_string(seed) +
-                     " (bfbench check -k " + kernel + " --seed " + std::to_string(seed) + " -v shows the calls)");
+                     " (" + bfbench_name() + " check -k " + kernel + " --seed " + std::to_string(seed) + " -v shows the calls)");
   const CheckCall &cc = *calls.front();
   if (case_name) *case_name = cc.case_name;
   Call c;

@@ -53,6 +53,11 @@ void set_product(Product p) {
   s.product = std::move(p);
 }
 
+std::string bfbench_name() {
+  const std::string &n = product().name;
+  return n == "bvb" ? "bfbench" : "bfbench-" + n;
+}
+
 const Registry &Registry::product() {
   static const Registry r(bvb::product().kernels);
   return r;

@@ -48,6 +48,9 @@ const Product &product();
 // Replaces the product; only before anything has read it (a std::logic_error after), so no
 // part of a run can see the other one.
 void set_product(Product p);
+// The command that works on the product, for the commands a report prints: "bfbench", or the
+// family's "bfbench-NAME".
+std::string bfbench_name();
 
 const char *impl_name(uint32_t impl);  // "c", "asm"
 uint32_t parse_impl(const std::string &s);  // throws InputError

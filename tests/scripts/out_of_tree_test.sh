@@ -4,7 +4,8 @@
 #   - its bfbench lists its kernel alone and runs the host reference on two frames;
 #   - with the toolchain: `check` passes and `budgets` holds against the example's budgets.json;
 #     then the copy's assembly gets one defect (the absolute value left out), is rebuilt, and
-#     both must fail (exit 1), check naming the kernel's assembly as FAILED.
+#     both must fail (exit 1), check naming the kernel's assembly as FAILED and replaying it
+#     with the family's bfbench.
 # usage: out_of_tree_test.sh BUILD_DIR HOST_ONLY(ON|OFF) CMAKE GENERATOR [CMAKE_ARGS...]
 set -uo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -56,6 +57,8 @@ rc=$?
 [ "$rc" = 1 ] || { cat "$tmp/broken_check.log"; fail "check of the broken assembly exited $rc, not 1"; }
 grep -q "FAILED absdiff_u8 (asm)" "$tmp/broken_check.log" ||
   { cat "$tmp/broken_check.log"; fail "check of the broken assembly named no failed absdiff_u8 (asm) call"; }
+grep -q "replay: bfbench-absdiff check --seed 1 --case absdiff_u8:" "$tmp/broken_check.log" ||
+  { cat "$tmp/broken_check.log"; fail "the failure's replay command is not the family's bfbench"; }
 "$bench" budgets -j 2 > "$tmp/broken_budgets.log" 2>&1
 rc=$?
 [ "$rc" = 1 ] || { cat "$tmp/broken_budgets.log"; fail "budgets of the broken assembly exited $rc, not 1"; }
