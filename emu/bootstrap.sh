@@ -5,6 +5,8 @@
 #   emu/bootstrap.sh                 build if needed; print the toolchain prefix on stdout
 #   emu/bootstrap.sh --print-prefix  print where the toolchain is (or would be); build nothing
 #   emu/bootstrap.sh --print-key     print the cache key
+#   emu/bootstrap.sh --with-gdb      also bfin-elf-gdb with the simulator built in (about 25
+#                                    more minutes; for bfbench debug): $prefix/bin/bfin-elf-gdb
 #
 # Standard output carries the prefix and nothing else (callers capture it); progress, apt-get's
 # output and errors go to standard error, each stage's output to its log.
@@ -17,6 +19,10 @@
 #   sim-<skey>  bfin-elf-run and its test suite: the gdb-source line, this script's simulator
 #               stages, emu/patches/sim/*.patch (applied in name order)
 #   tc-<tkey>-<skey>  the prefix callers use: both parts joined (hard links, so it costs no space)
+#   gdb-<gkey>  only with --with-gdb: bfin-elf-gdb, from the same gdb source and simulator patches
+#               as the simulator (the gdb-source line, this script's gdb stages, emu/patches/sim);
+#               the prefix's bin/bfin-elf-gdb is a symbolic link to it. Not part of the prefix's
+#               key: the default build is the same with or without it.
 # Each part is built in work-<part> and renamed into place only when complete, so a directory named
 # by its key is always whole. A failed stage removes its own build directory; stages that finished
 # keep their stamps, so the next run resumes at the failed stage. Two runs at once serialise on a
@@ -34,6 +40,8 @@ die() { say "error: $*"; exit 1; }
 
 # Packages needed to build, beside the pinned source packages.
 build_deps=(build-essential flex bison texinfo libgmp-dev libmpfr-dev libmpc-dev xz-utils patch file)
+# And for gdb (--with-gdb): its command line's terminal library.
+gdb_deps=(libncurses-dev)
 mapfile -t source_pkgs < <(grep -v '^\s*#' "$lockfile" | grep -v '^\s*$')
 
 lock_lines() { grep -v '^\s*#' "$lockfile" | grep -v '^\s*$' | grep -E "$1" || true; }
@@ -116,23 +124,51 @@ sim_build() {
   cp -a "$work/src/gdb/sim/testsuite/bfin/." "$stage_dir/share/bfin-sim-testsuite/"
 }
 
+# ---- stages of the gdb part (--with-gdb) ----
+
+gdb_unpack() {
+  local src="$work/src"
+  rm -rf "$src"; mkdir -p "$src"
+  tar -C "$src" -xf "$(src_tarball /usr/src/gdb.tar.xz)"
+  ( cd "$src" && test -d gdb )
+  apply_patches "$here/patches/sim" "$src/gdb"
+}
+
+gdb_build() {
+  # The simulator is linked into gdb (target sim), with the same patches as bfin-elf-run.
+  "$work/src/gdb/configure" --target=$target --prefix="$stage_dir" \
+    --enable-sim --disable-gdbserver --disable-binutils --disable-ld --disable-gas \
+    --disable-gprof --disable-gold --disable-gprofng --disable-nls --disable-werror \
+    --disable-tui --without-python --without-guile --without-debuginfod --without-babeltrace \
+    --without-lzma --without-xxhash --without-intel-pt
+  make -j"$jobs" all-gdb
+  make install-gdb
+  "$stage_dir/bin/$target-gdb" -nx -batch -ex 'target sim' -ex 'show version' >/dev/null
+}
+
 tc_stages=(tc_unpack tc_binutils tc_gcc tc_headers)
 sim_stages=(sim_unpack sim_build)
+gdb_stages=(gdb_unpack gdb_build)
 
 tkey=$( { lock_lines '^(binutils|gcc|newlib)'; declare -f src_tarball apply_patches "${tc_stages[@]}";
           patch_text toolchain; host_id; } | sha256sum | cut -c1-16)
 skey=$( { lock_lines '^gdb'; declare -f src_tarball apply_patches "${sim_stages[@]}";
           patch_text sim; host_id; } | sha256sum | cut -c1-16)
+gkey=$( { lock_lines '^gdb'; declare -f src_tarball apply_patches "${gdb_stages[@]}";
+          patch_text sim; host_id; } | sha256sum | cut -c1-16)
 key="$tkey-$skey"
 prefix="$cache_root/tc-$key"
 
+with_gdb=false
 case "${1:-}" in
   --print-prefix) echo "$prefix"; exit 0 ;;
   --print-key) echo "$key"; exit 0 ;;
+  --with-gdb) with_gdb=true; build_deps+=("${gdb_deps[@]}") ;;
   "") ;;
-  -h|--help) sed -n '2,25p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+  -h|--help) sed -n '2,29p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
   *) die "unknown option '$1' (try --help)" ;;
 esac
+[ $# -le 1 ] || die "one option at most (try --help)"
 
 # A cached toolchain must also run here: its compiler links against the host's gmp/mpfr/mpc.
 toolchain_works() {
@@ -174,7 +210,11 @@ ensure_packages() {
   [ ${#missing[@]} -eq 0 ] || die "still missing after apt-get: ${missing[*]}"
 }
 
-if toolchain_works "$prefix"; then
+gdb_works() { [ -f "$cache_root/gdb-$gkey/.complete" ] && [ "$1/bin/$target-gdb" -ef "$cache_root/gdb-$gkey/bin/$target-gdb" ] &&
+              "$1/bin/$target-gdb" -nx -batch -ex 'show version' >/dev/null 2>&1; }
+wanted_works() { toolchain_works "$1" && { ! $with_gdb || gdb_works "$1"; }; }
+
+if wanted_works "$prefix"; then
   say "toolchain $key is cached in $prefix"
   echo "$prefix"; exit 0
 fi
@@ -192,7 +232,7 @@ say "stage packages: start"
 ensure_packages
 say "stage packages: done in $(( $(date +%s) - t0 )) s"
 
-if toolchain_works "$prefix"; then   # built by the run we waited for, or only lacked packages
+if wanted_works "$prefix"; then   # built by the run we waited for, or only lacked packages
   say "toolchain $key is cached in $prefix"
   echo "$prefix"; exit 0
 fi
@@ -240,6 +280,19 @@ build_part() {
   rm -rf "$work"
 }
 
+# gdb, on request, beside a toolchain that is there (built now, or before).
+add_gdb() {
+  build_part gdb "$gkey" "${gdb_stages[@]}"
+  ln -sfn "$cache_root/gdb-$gkey/bin/$target-gdb" "$prefix/bin/$target-gdb"
+  gdb_works "$prefix" || die "bfin-elf-gdb in $prefix does not run"
+  say "bfin-elf-gdb in $prefix/bin"
+}
+
+if toolchain_works "$prefix"; then   # here only for the gdb (wanted_works said so above)
+  if $with_gdb; then add_gdb; fi
+  echo "$prefix"; exit 0
+fi
+
 build_part gcc "$tkey" "${tc_stages[@]}"
 build_part sim "$skey" "${sim_stages[@]}"
 
@@ -282,6 +335,7 @@ rm -rf "$smoke"
 touch "$join/.complete"
 rm -rf "$prefix"
 mv "$join" "$prefix"
+if $with_gdb; then add_gdb; fi
 
 say "total $(( $(date +%s) - total_t0 )) s; toolchain in $prefix"
 echo "$prefix"

@@ -13,8 +13,10 @@
 #include <unistd.h>
 
 #include "bench.h"
+#include "bfbench.h"
 #include "check.h"
 #include "cleanup.h"
+#include "debug.h"
 #include "family.h"
 #include "io.h"
 #include "patterns.h"
@@ -45,8 +47,9 @@ const char *kMainHelp =
     "  check                    C reference (host and Blackfin) vs assembly, bit for bit\n"
     "  bench                    modelled BF537 cycles per call and per pixel, C vs assembly\n"
     "  run KERNEL               one kernel on given frames\n"
-    "  budgets                  compare the bench with ci/budgets.json\n"
-    "  profile KERNEL           where one call's modelled cycles go, per source line and loop\n";
+    "  budgets                  compare the bench with the budgets (ci/budgets.json)\n"
+    "  profile KERNEL           where one call's modelled cycles go, per source line and loop\n"
+    "  debug KERNEL             one check call in bfin-elf-gdb, stopped at the kernel's entry\n";
 const char *kMainHelpTail =
     "\n"
     "'bfbench COMMAND --help' describes each. Exit status: 0 success, 1 a check or budget\n"
@@ -464,7 +467,8 @@ int cmd_budgets(Args &args) {
                      "usage: bfbench budgets [--update] [--file FILE] [-k GLOB] [-j N] [--timing none|bf537]\n\n"
                      "Measures every assembly kernel at the sizes its budgets name (and at 160x120,\n"
                      "320x240, 640x480 for kernels without one) and compares with the budgets file\n"
-                     "(default ci/budgets.json). Fails when a kernel exceeds its budget, has none, or\n"
+                     "(default ci/budgets.json; in the bfbench of a family built outside this tree,\n"
+                     "the family's BUDGETS file). Fails when a kernel exceeds its budget, has none, or\n"
                      "a budget names nothing measured. --update rewrites the file atomically with the\n"
                      "measured cycles and prints old -> new for every entry. Budgets are judged under the\n"
                      "timing model the file names (its \"timing\"; none when absent); --update --timing T\n"
@@ -472,7 +476,7 @@ int cmd_budgets(Args &args) {
     return 0;
   const bool update = args.flag("--update");
   const bool timing_given = !args.values_peek("--timing").empty();
-  std::string path = args.value("--file", BVB_SOURCE_DIR "/ci/budgets.json");
+  std::string path = args.value("--file", product().budgets);
   BenchOptions opts;
   opts.kernel_glob = args.value("-k", "*", "--kernel");
   opts.jobs = int(to_long(args.value("-j", std::to_string(default_jobs())), "-j", 1, 256));
@@ -623,9 +627,53 @@ int cmd_profile(Args &args) {
   return 0;
 }
 
+int cmd_debug(Args &args) {
+  if (help_requested(args,
+                     "usage: bfbench debug KERNEL --case KERNEL:N --seed S [--impl asm|c] [--batch]\n"
+                     "                    [--timing none|bf537] [--firmware ELF]\n\n"
+                     "The call that `bfbench check --seed S --case KERNEL:N` runs (a failure prints both),\n"
+                     "with its buffers, in bfin-elf-gdb's built-in simulator (target sim, as bfin-elf-run\n"
+                     "runs it), stopped at the kernel's entry; each buffer's address is printed and set\n"
+                     "as a gdb variable ($a, $dst, ...). --batch prints the registers at the entry and\n"
+                     "quits (for scripts). Needs the gdb: emu/bootstrap.sh --with-gdb (about 25 minutes;\n"
+                     "$BFBENCH_GDB names another). Exit status: gdb's; 2 without a gdb or on bad input.\n"))
+    return 0;
+  const std::string id = args.value("--case", "");
+  const std::string seed = args.value("--seed", "");
+  const std::string impl_s = args.value("--impl", "");
+  const bool batch = args.flag("--batch");
+  const std::string gdb = default_gdb();
+  // No gdb: one line saying how to get it, before anything else is looked at.
+  if (gdb.empty() || access(gdb.c_str(), X_OK) != 0)
+    throw InputError("no bfin-elf-gdb" + (gdb.empty() ? std::string(" in a host-only build") : " at " + gdb) +
+                     ": build it with emu/bootstrap.sh --with-gdb (about 25 minutes), or set $BFBENCH_GDB");
+  Target target = make_target(args);
+  auto pos = args.positional();
+  if (pos.size() != 1) throw Usage("debug takes one KERNEL (bfbench list)");
+  const KernelInfo &k = target.registry().get(pos[0]);
+  if (id.empty() || seed.empty()) throw Usage("debug needs --case KERNEL:N and --seed S, as a check failure prints them");
+  const size_t colon = id.rfind(':');
+  if (colon == std::string::npos || id.substr(0, colon) != k.name || colon + 1 == id.size() ||
+      id.find_first_not_of("0123456789", colon + 1) != std::string::npos)
+    throw Usage("--case wants " + k.name + ":N, got '" + id + "'");
+  const uint32_t impl = impl_s.empty() ? uint32_t(k.has_asm ? BVB_IMPL_ASM : BVB_IMPL_C) : parse_impl(impl_s);
+  std::string case_name;
+  const Call call = case_call(target, id, uint32_t(to_long(seed, "--seed", 0, 4294967295L)), impl, &case_name);
+  const std::string window = make_temp_file();
+  struct Cleanup {
+    std::string p;
+    ~Cleanup() { remove_temp_file(p); }
+  } cleanup{window};
+  const DebugPlan plan = plan_debug(target, call, window, gdb, batch);
+  std::printf("%s (%s) %s, seed %s: stopping at %s (0x%08x)\n", id.c_str(), impl_name(impl), case_name.c_str(),
+              seed.c_str(), plan.entry_name.c_str(), plan.entry);
+  for (const auto &b : plan.buffers) std::printf("  %s\n", b.c_str());
+  return run_gdb(plan.argv);
+}
+
 }  // namespace
 
-int main(int argc, char **argv) {
+int bvb::bfbench_main(int argc, char **argv) {
   // An interrupted run removes its window files and kills its simulators.
   bvb::install_interrupt_cleanup();
   if (argc < 2) {
@@ -645,6 +693,7 @@ int main(int argc, char **argv) {
     if (cmd == "run") return cmd_run(args);
     if (cmd == "budgets") return cmd_budgets(args);
     if (cmd == "profile") return cmd_profile(args);
+    if (cmd == "debug") return cmd_debug(args);
     bool handled = false;
     int rc = bvb::extra_command(cmd, argc - 1, argv + 1, &handled);
     if (handled) return rc;

@@ -123,7 +123,7 @@ TEST(Coverage, BenchInputsDoNotDependOnFilesOutsideTheRepository) {
 // it never judged, and the budgets name the kernel.
 TEST(Coverage, AKernelWithoutAFamilyIsReportedNotPassed) {
   std::vector<KernelInfo> ks = Registry::product().kernels();
-  ks.push_back({"ghost_u8", uint32_t(ks.size()), true});
+  ks.push_back({"ghost_u8", uint32_t(ks.size()), true, "ghost_u8_c", "ghost_u8_asm"});
   const Registry reg(ks);
   const Target t = generation_target(reg);
   CheckOptions o;

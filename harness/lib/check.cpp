@@ -149,8 +149,8 @@ std::string first_difference(const std::vector<uint8_t> &expected, const std::ve
 }
 
 std::string replay_command(const Failure &f) {
-  if (f.case_id.empty()) return "bfbench check -k " + f.kernel + " --seed " + std::to_string(f.seed);
-  return "bfbench check --seed " + std::to_string(f.seed) + " --case " + f.case_id;
+  if (f.case_id.empty()) return bfbench_name() + " check -k " + f.kernel + " --seed " + std::to_string(f.seed);
+  return bfbench_name() + " check --seed " + std::to_string(f.seed) + " --case " + f.case_id;
 }
 
 namespace {
@@ -391,7 +391,7 @@ std::string format_check_report(const Tallies &tally, const std::vector<Failure>
   for (const auto &kv : kernel_of) {
     const size_t more = shown[kv.first] - max_shown;
     out += "  ... " + std::to_string(more) + " more failure" + (more == 1 ? "" : "s") + " of " + kv.first +
-           " not shown (-v shows all): bfbench check -k " + kv.second + " --seed " + std::to_string(seed) + " -v\n";
+           " not shown (-v shows all): " + bfbench_name() + " check -k " + kv.second + " --seed " + std::to_string(seed) + " -v\n";
   }
   return out;
 }

@@ -1,5 +1,7 @@
 #include "registry.h"
 
+#include <stdexcept>
+
 #include "io.h"
 
 namespace bvb {
@@ -8,8 +10,8 @@ namespace {
 
 std::vector<KernelInfo> expand_product() {
   std::vector<KernelInfo> k;
-#define BVB_KERNEL(name, c_entry, asm_entry) k.push_back({#name, uint32_t(k.size()), true});
-#define BVB_KERNEL_C(name, c_entry) k.push_back({#name, uint32_t(k.size()), false});
+#define BVB_KERNEL(name, c_entry, asm_entry) k.push_back({#name, uint32_t(k.size()), true, #c_entry, #asm_entry});
+#define BVB_KERNEL_C(name, c_entry) k.push_back({#name, uint32_t(k.size()), false, #c_entry, ""});
 #include "kernels.def"
 #undef BVB_KERNEL
 #undef BVB_KERNEL_C
@@ -18,18 +20,46 @@ std::vector<KernelInfo> expand_product() {
 
 std::vector<KernelInfo> expand_selftest() {
   std::vector<KernelInfo> k;
-#define BVB_KERNEL(name, c_entry, asm_entry) k.push_back({#name, uint32_t(k.size()), true});
-#define BVB_KERNEL_C(name, c_entry) k.push_back({#name, uint32_t(k.size()), false});
+#define BVB_KERNEL(name, c_entry, asm_entry) k.push_back({#name, uint32_t(k.size()), true, #c_entry, #asm_entry});
+#define BVB_KERNEL_C(name, c_entry) k.push_back({#name, uint32_t(k.size()), false, #c_entry, ""});
 #include "selftest/selftest.def"
 #undef BVB_KERNEL
 #undef BVB_KERNEL_C
   return k;
 }
 
+// The product, and whether anything has read it yet (set_product is refused after).
+struct ProductState {
+  Product product{"bvb", expand_product(), BVB_FIRMWARE_ELF, BVB_SOURCE_DIR "/ci/budgets.json"};
+  bool read = false;
+};
+
+ProductState &product_state() {
+  static ProductState s;
+  return s;
+}
+
 }  // namespace
 
+const Product &product() {
+  ProductState &s = product_state();
+  s.read = true;
+  return s.product;
+}
+
+void set_product(Product p) {
+  ProductState &s = product_state();
+  if (s.read) throw std::logic_error("set_product after the product was read");
+  s.product = std::move(p);
+}
+
+std::string bfbench_name() {
+  const std::string &n = product().name;
+  return n == "bvb" ? "bfbench" : "bfbench-" + n;
+}
+
 const Registry &Registry::product() {
-  static const Registry r(expand_product());
+  static const Registry r(bvb::product().kernels);
   return r;
 }
 

@@ -234,6 +234,22 @@ void decode_result(const Call &c, const std::vector<uint32_t> &offsets, uint32_t
   }
 }
 
+// A window of calls, its header in h (run_window writes it at the start before each run, with
+// the first command to run); limit_total sums their watchdog limits.
+std::vector<uint8_t> encode_window(const std::vector<const Call *> &calls, Layout &l, bvb_header &h,
+                                   uint64_t &limit_total) {
+  l = lay_out(calls);
+  std::vector<uint8_t> win(l.size, 0);
+  h = bvb_header{};
+  h.magic = BVB_MAGIC;
+  h.version = BVB_VERSION;
+  h.window_size = l.size;
+  h.ncommands = uint32_t(calls.size());
+  limit_total = 0;
+  for (size_t i = 0; i < calls.size(); ++i)
+    limit_total += encode_call(*calls[i], l.offsets[i], uint32_t(i), win.data(), true);
+  return win;
+}
 
 }  // namespace
 
@@ -271,24 +287,8 @@ uint32_t Target::arena_bytes(uint32_t place) const {
   return hi > lo ? hi - lo : 0;
 }
 
-void Target::run_window(const std::vector<const Call *> &calls,
-                        std::vector<CallResult *> &out) const {
-  Layout l = lay_out(calls);
-  std::vector<uint8_t> win(l.size, 0);
-  bvb_header h{};
-  h.magic = BVB_MAGIC;
-  h.version = BVB_VERSION;
-  h.window_size = l.size;
-  h.ncommands = uint32_t(calls.size());
-  uint64_t limit_total = 0;
-  for (size_t i = 0; i < calls.size(); ++i)
-    limit_total += encode_call(*calls[i], l.offsets[i], uint32_t(i), win.data(), true);
-
-  const std::string path = make_temp_file();
-  struct Cleanup {
-    std::string p;
-    ~Cleanup() { remove_temp_file(p); }
-  } cleanup{path};
+sim::RunSpec Target::run_spec(const std::vector<const Call *> &calls, const std::string &path, uint32_t size,
+                              uint64_t limit_total) const {
   sim::RunSpec spec;
   spec.simulator = simulator_;
   spec.options = {"--timing", timing_};
@@ -296,9 +296,36 @@ void Target::run_window(const std::vector<const Call *> &calls,
     if (std::any_of(calls.begin(), calls.end(), [impl = impl](const Call *c) { return c->impl == impl; }))
       spec.options.insert(spec.options.end(), opts.begin(), opts.end());
   spec.elf = image_.elf;
-  spec.maps.push_back({path, BVB_WINDOW_ADDR, l.size});
+  spec.maps.push_back({path, BVB_WINDOW_ADDR, size});
   // A generous floor for slow machines: the simulator runs well over 5 M cycles per second.
   spec.wall_timeout_s = 120 + double(limit_total) / 5e6;
+  return spec;
+}
+
+sim::RunSpec Target::write_window(const Call &call, const std::string &path) const {
+  validate(call, registry());
+  const std::vector<const Call *> calls = {&call};
+  Layout l;
+  bvb_header h;
+  uint64_t limit_total = 0;
+  std::vector<uint8_t> win = encode_window(calls, l, h, limit_total);
+  std::memcpy(win.data(), &h, sizeof h);
+  write_file_atomic(path, win);
+  return run_spec(calls, path, l.size, limit_total);
+}
+
+void Target::run_window(const std::vector<const Call *> &calls,
+                        std::vector<CallResult *> &out) const {
+  const std::string path = make_temp_file();
+  struct Cleanup {
+    std::string p;
+    ~Cleanup() { remove_temp_file(p); }
+  } cleanup{path};
+  Layout l;
+  bvb_header h;
+  uint64_t limit_total = 0;
+  std::vector<uint8_t> win = encode_window(calls, l, h, limit_total);
+  const sim::RunSpec spec = run_spec(calls, path, l.size, limit_total);
 
   for (;;) {
     std::memcpy(win.data(), &h, sizeof h);
@@ -514,7 +541,7 @@ std::string env_or(const char *name, const std::string &fallback) {
 }  // namespace
 
 FirmwareImage product_firmware() {
-  return {env_or("BFBENCH_FIRMWARE", BVB_FIRMWARE_ELF), &Registry::product()};
+  return {env_or("BFBENCH_FIRMWARE", product().elf), &Registry::product()};
 }
 
 FirmwareImage selftest_firmware() {

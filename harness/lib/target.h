@@ -11,6 +11,7 @@
 
 #include "bvb/mailbox.h"
 #include "registry.h"
+#include "simdriver.h"
 
 namespace bvb {
 
@@ -130,9 +131,14 @@ class Target {
   // --timing-profile for the call it profiles, not for the reference it is checked with).
   void set_impl_options(uint32_t impl, std::vector<std::string> options) { impl_options_[impl] = std::move(options); }
   static constexpr uint32_t kDefaultCycleLimit = 300000000;
+  // Writes the window of one call to `path` and returns the simulator run that would serve it,
+  // for running it elsewhere (bfbench debug: under gdb's simulator).
+  sim::RunSpec write_window(const Call &call, const std::string &path) const;
 
  private:
   void run_window(const std::vector<const Call *> &calls, std::vector<CallResult *> &out) const;
+  sim::RunSpec run_spec(const std::vector<const Call *> &calls, const std::string &path, uint32_t size,
+                        uint64_t limit_total) const;
 
   FirmwareImage image_;
   std::string simulator_;

@@ -87,6 +87,16 @@ TEST(HostOnly, HostCommandsRun) {
   EXPECT_EQ(bfbench("list").status, 0);
 }
 
+// Without its gdb (emu/bootstrap.sh --with-gdb builds it on request), bfbench debug says so in
+// one line and exits 2, before it looks for a firmware or simulator.
+TEST(Debug, WithoutGdbSaysHowToBuildIt) {
+  CliRun r = bfbench("debug add_sat_u8 --case add_sat_u8:0 --seed 1", "BFBENCH_GDB=" + dir() + "no-such-gdb");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("emu/bootstrap.sh --with-gdb"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(r.out, "");
+}
+
 // --out names what the user wants written, and a device, FIFO or symbolic link stays what it
 // was (issue: a character device became a 59-byte regular file).
 TEST(OutputPaths, DeviceIsWrittenNotReplaced) {

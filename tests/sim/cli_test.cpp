@@ -296,6 +296,52 @@ uint64_t cause_sum(const json::Value &v) {
   return s;
 }
 
+// The value gdb's `info registers` shows for a register ("r0  0xff800040  -8388544").
+uint32_t gdb_register(const std::string &out, const std::string &reg) {
+  std::istringstream lines(out);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream w(line);
+    std::string name, value;
+    if (w >> name >> value && name == reg && value.rfind("0x", 0) == 0) return uint32_t(std::stoul(value, nullptr, 16));
+  }
+  ADD_FAILURE() << "no register " << reg << " in:\n" << out;
+  return 0;
+}
+
+// The address bfbench debug printed for a buffer ("  a (in, 19200 bytes, SDRAM) at 0x00012340").
+uint32_t printed_address(const std::string &out, const std::string &buffer) {
+  const size_t at = out.find("\n  " + buffer + " (");
+  const size_t addr = at == std::string::npos ? at : out.find(" at 0x", at);
+  if (addr == std::string::npos) {
+    ADD_FAILURE() << "no address for buffer " << buffer << " in:\n" << out;
+    return 0;
+  }
+  return uint32_t(std::stoul(out.substr(addr + 4, 10), nullptr, 16));
+}
+
+// A scripted gdb session (only where emu/bootstrap.sh --with-gdb built the gdb): bfbench debug
+// stops at the kernel's entry, its PC the entry bfbench names, and R0-R2 (add_sat_u8's a, b
+// and dst) the addresses it printed for those buffers, which came from a bfin-elf-run of the
+// same window.
+TEST(Debug, StopsAtTheKernelEntryWithItsBuffers) {
+  const char *env = std::getenv("BFBENCH_GDB");
+  const std::string gdb = env && *env ? env : BVB_DEFAULT_GDB;
+  if (access(gdb.c_str(), X_OK) != 0) GTEST_SKIP() << "no " << gdb << " (emu/bootstrap.sh --with-gdb builds it)";
+  for (const char *impl : {"asm", "c"}) {
+    CliRun r = bfbench(std::string("debug add_sat_u8 --case add_sat_u8:3 --seed 7 --batch --impl ") + impl);
+    ASSERT_EQ(r.status, 0) << r.out << r.err;
+    const std::string entry = std::string("bvb_add_sat_u8_") + impl;
+    const size_t at = r.out.find("stopping at " + entry + " (0x");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    const uint32_t pc = uint32_t(std::stoul(r.out.substr(at + 13 + entry.size() + 1, 10), nullptr, 16));
+    EXPECT_NE(r.out.find("Breakpoint 1, "), std::string::npos) << r.out;
+    EXPECT_EQ(gdb_register(r.out, "pc"), pc) << r.out;
+    EXPECT_EQ(gdb_register(r.out, "r0"), printed_address(r.out, "a")) << r.out;
+    EXPECT_EQ(gdb_register(r.out, "r1"), printed_address(r.out, "b")) << r.out;
+    EXPECT_EQ(gdb_register(r.out, "r2"), printed_address(r.out, "dst")) << r.out;
+  }
+}
+
 TEST(Profile, AccountsForEveryCycleTheBenchMeasures) {
   const std::string j = dir() + "prof.json", csv = dir() + "prof.csv";
   CliRun r = bfbench("profile add_sat_u8 --size 64x48 --json " + j);
