@@ -13,6 +13,7 @@
 
 #include <unistd.h>
 
+#include "extra_commands.h"
 #include "io.h"
 #include "pipeline/runner.h"
 #include "pipelines/odometry.h"
@@ -380,4 +381,10 @@ int heldout_command(int argc, char **argv) {
   }
 }
 
+}  // namespace bvb
+
+namespace bvb {
+// In this tree's bfbench only: the command runs this tree's pipelines.
+static const bool kHeldoutRegistered = register_extra_command(
+    "heldout", "the pipelines on scenes drawn afresh from a printed seed, judged on rates", heldout_command);
 }  // namespace bvb
