@@ -436,12 +436,7 @@ int cmd_run(Args &args) {
   if (!elf.empty()) fw.elf = elf;
   Target target(fw, default_simulator());
   if (!timing.empty()) target.set_timing(timing);
-  Call call;
-  call.kernel = k.index;
-  call.impl = parse_impl(impl);
-  call.cycle_limit = plan.call.cycle_limit;
-  call.args = plan.call.args;
-  call.bufs = plan.call.bufs;
+  const Call call = target_call(plan.call, k.index, parse_impl(impl));
   CallResult r = target.run_one(call);
   // Frames too large for the Blackfin's memory are the input's fault, not the kernel's.
   if (r.crash.empty() && r.status == BVB_NO_SPACE && r.detail < call.bufs.size()) {

@@ -193,6 +193,18 @@ uint32_t canary_seed_of(uint32_t seed) {
   return r.u32() | 1;
 }
 
+Call target_call(const CheckCall &cc, uint32_t kernel, uint32_t impl, uint32_t canary_seed) {
+  Call c;
+  c.kernel = kernel;
+  c.impl = impl;
+  c.cycle_limit = cc.cycle_limit;
+  c.args = cc.args;
+  c.bufs = cc.bufs;
+  c.junk_seed = cc.junk_seed;
+  c.canary_seed = canary_seed;
+  return c;
+}
+
 std::string fault_near_buffer(const Call &call, const CallResult &r) {
   if (r.status != BVB_FAULT || !data_cplb_fault(r.seqstat)) return "";
   // How far from a buffer a stray access still counts as that buffer's: a row or two of a
@@ -467,15 +479,7 @@ size_t Checker::flush() {
     for (uint32_t impl : {uint32_t(BVB_IMPL_C), uint32_t(BVB_IMPL_ASM)}) {
       if (impl == BVB_IMPL_ASM && !k.has_asm) continue;
       if (impl == BVB_IMPL_C && !opts_.run_c && k.has_asm) continue;
-      Call c;
-      c.kernel = k.index;
-      c.impl = impl;
-      c.cycle_limit = cc.cycle_limit;
-      c.args = cc.args;
-      c.bufs = cc.bufs;
-      c.junk_seed = cc.junk_seed;
-      c.canary_seed = opts_.adversarial ? canary_seed_of(opts_.seed) : 0;
-      calls.push_back(std::move(c));
+      calls.push_back(target_call(cc, k.index, impl, opts_.adversarial ? canary_seed_of(opts_.seed) : 0));
       slots.push_back({p, impl});
     }
   }

@@ -243,6 +243,9 @@ std::string format_failed_calls(const std::map<std::string, Checker::Tally> &per
 inline uint8_t poison_byte(size_t i) { return uint8_t(0xC3 + i * 0x29); }
 // The canaries' seed for a check seed: the callee-saved registers' canaries differ per seed.
 uint32_t canary_seed_of(uint32_t seed);
+// The simulator's call for `cc`: its arguments, buffers, cycle limit and junk, run as `impl` of
+// the registry's kernel `kernel` (check, debug, run and the pipelines build theirs here).
+Call target_call(const CheckCall &cc, uint32_t kernel, uint32_t impl, uint32_t canary_seed = 0);
 // For a fault at a data address: which buffer it lies just past the end of (or just before),
 // as "an access N bytes past the end of buffer 'a' ..."; "" when none is near.
 std::string fault_near_buffer(const Call &call, const CallResult &r);

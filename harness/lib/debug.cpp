@@ -73,15 +73,7 @@ Call case_call(const Target &target, const std::string &case_id, uint32_t seed, 
                      " (" + bfbench_name() + " check -k " + kernel + " --seed " + std::to_string(seed) + " -v shows the calls)");
   const CheckCall &cc = *calls.front();
   if (case_name) *case_name = cc.case_name;
-  Call c;
-  c.kernel = k.index;
-  c.impl = impl;
-  c.cycle_limit = cc.cycle_limit;
-  c.args = cc.args;
-  c.bufs = cc.bufs;
-  c.junk_seed = cc.junk_seed;
-  c.canary_seed = canary_seed_of(seed);
-  return c;
+  return target_call(cc, k.index, impl, canary_seed_of(seed));
 }
 
 DebugPlan plan_debug(const Target &target, const Call &call, const std::string &window, const std::string &gdb,

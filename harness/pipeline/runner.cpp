@@ -118,12 +118,7 @@ PipelineRun run_pipeline(const PipelineDef &def, const Target *target, const Sce
       host_out = def.decode(host);
     }
     if (on_target) {
-      Call call;
-      call.kernel = k.index;
-      call.impl = impl;
-      call.cycle_limit = cc.cycle_limit;
-      call.args = cc.args;
-      call.bufs = cc.bufs;
+      const Call call = target_call(cc, k.index, impl);
       CallResult r = session->call(call);
       std::string err = describe_failure(call, r, target->elf());
       if (!err.empty()) throw sim::SetupError(def.name + " frame " + std::to_string(f) + ": " + err);
