@@ -127,6 +127,44 @@ TEST(OdometryParams, OutOfRangeIsRejectedWithoutWriting) {
   for (size_t i = 0; i < sizeof result; ++i) EXPECT_EQ(r[i], 0x5A);
 }
 
+// A frame takes the quantities setup derives from the state when a full run of the same
+// geometry and parameters left them there, and derives them afresh when any of them changed
+// (every parameter word, the size, the stride), on frame 0, or after a run stopped early.
+TEST(OdometryParams, SetupIsTakenFromTheStateOnlyForTheSameGeometryAndParameters) {
+  const int w = 160, h = 120;
+  const bvb_odo_params p = params_160x120();
+  std::vector<uint8_t> frame(size_t(w) * h);
+  uint32_t r = 12345;
+  for (uint8_t &b : frame) b = uint8_t((r = r * 1103515245u + 12345u) >> 24);
+  std::vector<uint8_t> state(bvb_pipe_odometry_state_bytes(w, h, w, &p)), work(bvb_pipe_odometry_work_bytes(w, h, w, &p)),
+      fast(bvb_pipe_odometry_fast_bytes(w, h, w, &p));
+  bvb_pipe_result result;
+  const bvb_pipe_frame f0{0, 0, 0, 0}, f1{1, 0, 0, 0}, f2{2, 0, 0, 0}, f2_early{2, 0, 0, 3};
+  EXPECT_EQ(bvb_pipe_odometry_setup_cached(state.data(), &f0, w, h, w, &p), 0);
+  ASSERT_GE(bvb_pipe_odometry_c(frame.data(), w, h, w, &f0, &p, state.data(), &result, work.data(), fast.data()), 0);
+  EXPECT_EQ(bvb_pipe_odometry_setup_cached(state.data(), &f1, w, h, w, &p), 1);
+  EXPECT_EQ(bvb_pipe_odometry_setup_cached(state.data(), &f0, w, h, w, &p), 0);
+  EXPECT_EQ(bvb_pipe_odometry_setup_cached(state.data(), &f1, w - 1, h, w, &p), 0);
+  EXPECT_EQ(bvb_pipe_odometry_setup_cached(state.data(), &f1, w, h - 1, w, &p), 0);
+  EXPECT_EQ(bvb_pipe_odometry_setup_cached(state.data(), &f1, w, h, w + 4, &p), 0);
+  const size_t words = sizeof p / sizeof(int32_t);
+  for (size_t i = 0; i < words; ++i) {
+    bvb_odo_params q = p;
+    reinterpret_cast<int32_t *>(&q)[i] += 1;
+    EXPECT_EQ(bvb_pipe_odometry_setup_cached(state.data(), &f1, w, h, w, &q), 0) << "parameter word " << i;
+  }
+  // A run stopped early leaves the state as it was, its cache included; a changed parameter's
+  // full run replaces it.
+  bvb_odo_params q = p;
+  q.max_range = 18 << 16;
+  ASSERT_GE(bvb_pipe_odometry_c(frame.data(), w, h, w, &f2_early, &q, state.data(), &result, work.data(), fast.data()), 0);
+  EXPECT_EQ(bvb_pipe_odometry_setup_cached(state.data(), &f2, w, h, w, &q), 0);
+  EXPECT_EQ(bvb_pipe_odometry_setup_cached(state.data(), &f2, w, h, w, &p), 1);
+  ASSERT_GE(bvb_pipe_odometry_c(frame.data(), w, h, w, &f2, &q, state.data(), &result, work.data(), fast.data()), 0);
+  EXPECT_EQ(bvb_pipe_odometry_setup_cached(state.data(), &f2, w, h, w, &q), 1);
+  EXPECT_EQ(bvb_pipe_odometry_setup_cached(state.data(), &f2, w, h, w, &p), 0);
+}
+
 // The square's first two sides (F36 + L90 + F36), vision alone. Driving towards the boxes the
 // profile follows their edges as they spread outwards: with the profile alone (rot_feat=0) the
 // heading ends 4.9 degrees off. The floor features hold it: within 0.3 degrees, measured by

@@ -180,7 +180,7 @@
 #include "bvb/pipeline.h"
 
 #define BVB_ODO_MAX_FEATURES 127
-#define BVB_ODO_STATE_VERSION 0x4F444F32 /* "ODO2" */
+#define BVB_ODO_STATE_VERSION 0x4F444F33 /* "ODO3" */
 
 #define BVB_ODO_TRACK_LK 0
 #define BVB_ODO_TRACK_NCC 1
@@ -300,6 +300,11 @@ uint32_t bvb_pipe_odometry_fast_bytes(int32_t width, int32_t height, int32_t str
 /* The first image row of the feature region (floor nearer than max_range), as the pipeline
  * computes it; -1 when the parameters are out of range. */
 int32_t bvb_pipe_odometry_floor_y0(int32_t width, int32_t height, int32_t stride, const struct bvb_odo_params *p);
+/* 1 when a frame (info) with this geometry and these parameters takes its derived quantities
+ * from the state (a full run of the same ones left them there) instead of deriving them again;
+ * 0 when it derives them. Exported for the host tests. */
+int32_t bvb_pipe_odometry_setup_cached(const uint8_t *state, const struct bvb_pipe_frame *info, int32_t width,
+                                       int32_t height, int32_t stride, const struct bvb_odo_params *p);
 
 int32_t bvb_pipe_odometry_run(const struct bvb_odo_kernels *k, const uint8_t *frame, int32_t width,
                               int32_t height, int32_t stride, const struct bvb_pipe_frame *info,
