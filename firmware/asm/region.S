@@ -160,26 +160,29 @@ _bvb_free_space_asm:
 	cc = p2 < 0;
 	if cc jump .Lfs_odd;
 	/* first pair's loads; the loop loads one pair ahead */
-	mnop || r1 = b[p0++] (z) || r2.l = w[i0++];
+	/* At most one access of rows[] per instruction, and none beside the first-column mask
+	 * load: the loads and stores of rows[] (int16, at any even address) and of the mask
+	 * meet in one sub-bank as often as not (L1 sub-bank collisions, --timing bf537). */
+	r1 = b[p0++] (z);
 	r0 = b[p0++] (z);
 	r0 = pack (r0.l, r1.l);
 	cc = p2 == 0;
 	if cc jump .Lfs_last;
 	lsetup (.Lfs_pair, .Lfs_pair_end) lc0 = p2;
 .Lfs_pair:
-	r0 = r0 << 15 (v, s) || r1 = b[p0++] (z) || r2.h = w[i0++];
-	r0 = r7 -|- r0;
-	r0 = r6 +|+ r0 (s);
+	r0 = r0 << 15 (v, s) || r2.l = w[i0++];
+	r0 = r7 -|- r0 || r2.h = w[i0++];
+	r0 = r6 +|+ r0 (s) || r1 = b[p0++] (z);
 	r2 = min (r2, r0) (v);
 	r0 = r5 -|- r2 (s);
 	r0 = r0 & r4;
 	r2 = r2 ^ r0;
 	r3 = max (r3, r2) (v) || r0 = b[p0++] (z) || w[i1++] = r2.l;
 .Lfs_pair_end:
-	r0 = pack (r0.l, r1.l) || w[i1++] = r2.h || r2.l = w[i0++];
+	r0 = pack (r0.l, r1.l) || w[i1++] = r2.h;
 .Lfs_last:
-	r0 = r0 << 15 (v, s) || r2.h = w[i0++];
-	r0 = r7 -|- r0;
+	r0 = r0 << 15 (v, s) || r2.l = w[i0++];
+	r0 = r7 -|- r0 || r2.h = w[i0++];
 	r0 = r6 +|+ r0 (s);
 	r2 = min (r2, r0) (v);
 	r0 = r5 -|- r2 (s);
