@@ -20,7 +20,16 @@
  *   either profile absorbed through I0 and I1) after the overlap's first n mod 4 bytes have
  *   been taken one by one; a lone last 4-byte chunk gets one more SAA, the lanes are summed
  *   as unsigned halves with the MACs, and S(t) is compared with the best by
- *   cross-multiplication. Lower bound: (w - |t|) / 4 cycles per shift, the SAA rate.
+ *   cross-multiplication (out of line: only when S(t) is below the best S, which with the
+ *   overlap never growing outwards is needed for f(t) to be below the best f).
+ *   p2's words are first copied onto the stack (L1 bank B; w / 4 words, 2 cycles each) unless
+ *   p1 is in bank B itself: the two loads of every SAA then come from different banks
+ *   (profiles in SDRAM sit in bank A's data cache, where the model puts two lines in one
+ *   sub-bank whenever their address bits 13:12 agree: one collision per SAA before).
+ *   Lower bound: (w - |t|) / 4 cycles per shift, the SAA rate (two 4-byte loads and one SAA
+ *   per cycle), 19,240 cycles at w = 320, rho = 160. Profiles not in the data cache would
+ *   add their 2 w bytes from SDRAM, at most 2 w / 0.5 = 1,280 cycles at w = 320 of line fills;
+ *   in the bench and in the odometry (which made them just before) they are in it.
  *
  * Measured (bfbench bench):
  *   profile, band of h / 2 rows (60, 120, 240):
@@ -30,7 +39,7 @@
  *     160x120: C 105,375, asm 13,056 (8.1x); 320x240: C 402,634, asm 35,448 (11.4x);
  *     640x480: C 1,573,222, asm 109,192 (14.4x); bound 4,820 / 19,240 / 76,880 (SAA rate);
  *     about 50 cycles a shift go to set-up, the 0..3 odd bytes, the lane sum and the
- *     comparison.
+ *     comparison. (Before the copy of p2; now 12,660 / 34,585 / 107,485.)
  * Both kernels read their inputs only within the words that hold them (circular buffers over
  * each row or profile). Working set: the profile's 16-bit column sums (scratch, 1.3 KB at 640
  * wide; L1 on hardware); the shift search keeps everything in registers.
@@ -47,9 +56,21 @@
  *     from the monitor's copy into SDRAM (a camera frame never is), and 173,889 at 320x240,
  *     where two rows a pass fall in the same sets of the 2-way cache and lines were filled
  *     again and again.
- *   shift: 160x120 18,050 (1.38x the simulator's count), 320x240 55,042 (1.55x): the profiles
- *     are small and stay in the data cache after their first lines; the rest is those fills.
- *     Bound: the SAA rate (the bus, 2 w bytes once, is far below it). */
+ *   shift: 160x120 12,656, 320x240 34,581 (1.80x the bound of 19,240), 640x480 107,481
+ *     (1.40x of 76,880); the simulator's own counts are the same but for 4 cycles: no
+ *     collisions, no line fills (the profiles are in the data cache), 7 address-register
+ *     cycles. Before the copy of p2: 18,050 and 55,042, of which 19,602 were sub-bank
+ *     collisions of the SAA's two loads. Where the rest goes at 320x240 (bfbench profile):
+ *     the SAA loops take 18,880 of the bound's 19,240; each shift costs some 47 cycles more:
+ *     the n mod 4 odd bytes one by one (5 cycles a byte and 7 to set up, about 11 a shift on
+ *     average), the last lone SAA and its branch (about 5), the lane sum (6), pointers, loop
+ *     counts and the SAA loop's set-up (about 12), the branch over the odd bytes (about 2
+ *     on average, mispredicted 1 time in 4), the curve store and the test against the best
+ *     (2), of which 1,976 are branch cycles. 160 k-steps of two shifts: 95 cycles a step
+ *     over their SAA loops. Toward the bound: a zero-padded copy of p2 turns the odd bytes
+ *     into one more SAA and a running correction of p1's bytes, and the lanes' sum into one
+ *     instruction (R = A1.L + A1.H, R = A0.L + A0.H, exact while w <= 512); L1 code memory
+ *     (48 KB, 28 bytes left) has no room for it beside the present path today. */
 
 	.section .rodata
 	.align 4
