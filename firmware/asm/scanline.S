@@ -429,14 +429,24 @@ _bvb_scanline_shift_u8_asm:
 	m0 = r0;			/* p1 */
 	m1 = r1;			/* p2 */
 	m2 = r2;			/* w */
-	/* p2's words onto the stack (L1 bank B), unless p1 is in bank B itself: the search's
+	/* p2's words onto the stack (L1 bank B), unless p1 or p2 is in bank B already or their
+	 * addresses differ in bits 13:12 (the sub-bank in L1 and, the model's assumption, in
+	 * the data cache): the search's
 	 * dual loads then never meet in one sub-bank (through the data cache, as in SDRAM, both
 	 * profiles would be in bank A's cache, often in one sub-bank: 36% of the call). */
+	r3 = r0 ^ r1;
+	r4 = 0x3000 (z);
+	r3 = r3 & r4;
+	cc = r3 == 0;
+	if !cc jump .Lsh_nocopy;	/* other sub-banks (address bits 13:12) */
 	r3 = r0 >> 15;
 	r4 = 0x1ff2 (z);
 	r4 <<= 4;			/* 0xff900000 >> 15 */
 	cc = r3 == r4;
 	if cc jump .Lsh_nocopy;
+	r3 = r1 >> 15;
+	cc = r3 == r4;
+	if cc jump .Lsh_nocopy;		/* p2 in bank B already */
 	r3 = -4;
 	r4 = r1 & r3;
 	r5 = r1 + r2;
