@@ -22,8 +22,9 @@
  *   as unsigned halves with the MACs, and S(t) is compared with the best by
  *   cross-multiplication (out of line: only when S(t) is below the best S, which with the
  *   overlap never growing outwards is needed for f(t) to be below the best f).
- *   p2's words are first copied onto the stack (L1 bank B; w / 4 words, 2 cycles each) unless
- *   p1 is in bank B itself: the two loads of every SAA then come from different banks
+ *   p2's words are first copied onto the stack (L1 bank B; w / 4 words, 2 cycles each) when
+ *   the profiles' addresses agree in bits 13:12 and neither is in bank B: the two loads of
+ *   every SAA then come from different banks
  *   (profiles in SDRAM sit in bank A's data cache, where the model puts two lines in one
  *   sub-bank whenever their address bits 13:12 agree: one collision per SAA before).
  *   Lower bound: (w - |t|) / 4 cycles per shift, the SAA rate (two 4-byte loads and one SAA
@@ -39,10 +40,11 @@
  *     160x120: C 105,375, asm 13,056 (8.1x); 320x240: C 402,634, asm 35,448 (11.4x);
  *     640x480: C 1,573,222, asm 109,192 (14.4x); bound 4,820 / 19,240 / 76,880 (SAA rate);
  *     about 50 cycles a shift go to set-up, the 0..3 odd bytes, the lane sum and the
- *     comparison. (Before the copy of p2; now 12,660 / 34,585 / 107,485.)
+ *     comparison. (Before the copy of p2; now 12,668 / 34,593 / 107,493.)
  * Both kernels read their inputs only within the words that hold them (circular buffers over
  * each row or profile). Working set: the profile's 16-bit column sums (scratch, 1.3 KB at 640
- * wide; L1 on hardware); the shift search keeps everything in registers.
+ * wide; L1 on hardware); the shift search: a copy of p2 on the stack (w bytes, rounded to words)
+ * when the two profiles would share a sub-bank, the rest in registers.
  *
  * Modelled (bfbench bench, --timing bf537):
  *   profile, frames in SDRAM, scratch in L1 bank B: the band's rows come in by memory DMA
@@ -56,7 +58,7 @@
  *     from the monitor's copy into SDRAM (a camera frame never is), and 173,889 at 320x240,
  *     where two rows a pass fall in the same sets of the 2-way cache and lines were filled
  *     again and again.
- *   shift: 160x120 12,656, 320x240 34,581 (1.80x the bound of 19,240), 640x480 107,481
+ *   shift: 160x120 12,664, 320x240 34,589 (1.80x the bound of 19,240), 640x480 107,489
  *     (1.40x of 76,880); the simulator's own counts are the same but for 4 cycles: no
  *     collisions, no line fills (the profiles are in the data cache), 7 address-register
  *     cycles. Before the copy of p2: 18,050 and 55,042, of which 19,602 were sub-bank
