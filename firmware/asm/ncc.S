@@ -74,8 +74,8 @@
  * of one cycle a bit each with DIVQ and a two-op root step, some 50 a score), so about 120
  * cycles a score is the bound this method could approach; the step there is a scoring path
  * of its own (running window sums, DIVQ, no calls a score), for which L1 code memory has no
- * room today (48 KB, 8 bytes free on this tree). It reads its one point through the cache: memory DMA
- * would wait ~3,500 cycles for it against ~2,300 of line fills at 160x120 (~15,000 at
+ * room today (48 KB, 8 bytes free on this tree). It reads its one point through the cache:
+ * memory DMA would wait ~3,500 cycles for it against ~2,300 of line fills at 160x120 (~15,000 at
  * 320x240: the matcher's DMA path, _ncc_dlayout/_ncc_dstart, would save ~11,000 there, at
  * some 60 bytes of code).
  * Working set: the scratch buffer, 14.9 KB for r = 5, s = 8 (L1 data bank A in the bench, frames
