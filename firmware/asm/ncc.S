@@ -58,11 +58,26 @@
  * template at many offsets, and each of those costs an exact comparison (~200 cycles): on the
  * Middlebury pairs (RubberWhale, Grove2, Urban2, Dimetrodon, Hydrangea; 48 points, r = 5, s = 8)
  * 256 to 391 cycles per candidate, 4 to 6 times faster than the C reference there.
- * ncc_scoremap (one point, every candidate scored exactly): 166,741 modelled cycles at 160x120
- * (577 per score), 179,698 at 320x240; 164,464 issued, ~400 address-register stalls (one a
- * candidate in _ncc_exactv), no collisions, the rest SDRAM. It reads its one point through the
- * cache: memory DMA would wait ~3,500 cycles for it against ~2,300 of line fills at 160x120
- * (~15,000 at 320x240), so it is not used there.
+ * ncc_scoremap (one point, every candidate scored exactly): 167,005 modelled cycles at 160x120
+ * (578 per score), 179,698 at 320x240 (622); 140,537 issued, 23,906 multi-cycle (calls, returns
+ * and taken branches: five calls a score), ~400 address-register stalls (one a candidate in
+ * _ncc_exactv), no collisions, the rest SDRAM line fills (2,183 at 160x120, 14,876 at
+ * 320x240, where the frames are larger than the data cache). Where they go at 320x240
+ * (bfbench profile ncc_scoremap --size 320x240, by routine; 289 scores): _ncc_exactv 38,726
+ * (134 a score: the window's exact sums of I and I^2 from pass 1's column sums), _ncc_isqrt
+ * 29,478 (102: one bit per 5-cycle iteration), _ncc_udiv 27,645 (96: likewise, 17 bits),
+ * _ncc_score 21,964 (76) and _ncc_mul64 5,491 (19), the MAC pass 17,730 (61.3 a score, at its
+ * bound), the per-score loop 12,201 (42: context loads and stores, the calls), _ncc_build
+ * 11,377 (mostly the line fills of the search area), _ncc_num 8,058 (28), the template 4,891,
+ * pass 1 1,655. The bench's bound of 60.5 is the MAC pass's alone: an exact score also needs
+ * its window's v (a few ops from running sums), a square root and a division (on the order
+ * of one cycle a bit each with DIVQ and a two-op root step, some 50 a score), so about 120
+ * cycles a score is the bound this method could approach; the step there is a scoring path
+ * of its own (running window sums, DIVQ, no calls a score), for which L1 code memory has no
+ * room today (48 KB, 8 bytes free on this tree). It reads its one point through the cache:
+ * memory DMA would wait ~3,500 cycles for it against ~2,300 of line fills at 160x120 (~15,000 at
+ * 320x240: the matcher's DMA path, _ncc_dlayout/_ncc_dstart, would save ~11,000 there, at
+ * some 60 bytes of code).
  * Working set: the scratch buffer, 14.9 KB for r = 5, s = 8 (L1 data bank A in the bench, frames
  * in SDRAM, read once per point by DMA: a byte per pixel of the search area and of the
  * template). The copy program's P-register loads are used as addresses 6 cycles later (no stall).

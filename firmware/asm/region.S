@@ -33,6 +33,21 @@
  *   rows it must scan; measured 1.07, 1.03 and 1.13 times that bound. The C walks each column
  *   only up to its boundary, the assembly walks whole rows (contiguous loads, two columns per
  *   op) and stops when every column (of a 64-column strip, in frames wider than 320) is decided.
+ *   Modelled (--timing bf537, mask and rows in SDRAM as the bench places them): 160x120
+ *   69,026 (1.18x the bound of 3.04 per pixel), 320x240 256,806 (1.11x of 3.00), 640x480
+ *   753,936 (1.25x of 1.96). The mask's rows come from SDRAM by memory DMA (bvb/dma.h) into
+ *   two band buffers on the stack (L1 bank B, at most 1 KB each: 3 rows a band at 320 wide,
+ *   6 at 160, 16 of a 64-column strip), bottom band first, the band above in flight while one
+ *   is scanned; a mask already in L1 is read where it is. The bus does not bind: a byte a
+ *   pixel at 0.5 byte per core cycle, 2 cycles against the scan's 4.5. Where the rest goes
+ *   at 320x240: 236,722 issued (the method's 9 per pair over the rows scanned, the bound),
+ *   the per-band work (wait, re-address, start: some 200 cycles a band, 53 bands) and the
+ *   first band's transfer before the scan starts, and the final pass. Before: 321,501, of
+ *   which 39,731 were L1 sub-bank collisions (the rows[] load and store of one issue, and the
+ *   mask byte beside a rows[] access; now at most one rows[] access an issue and none beside
+ *   the first-column mask load) and 43,752 data-cache line fills of the mask.
+ *   Coherence on the chip: the mask must be in SDRAM when the DMA reads it (made by DMA, as
+ *   seg_avoid's map is, erode3x3_u8's output, or written back from the data cache first).
  *
  * In the segmentation obstacle avoidance pipeline (seg_avoid; scenes boxes_approach, boxes_turn,
  * cylinders_mover, 25 frames each) the two kernels take a frame from 2.31-2.66M cycles on average
@@ -43,7 +58,9 @@
  * up to 4 * width * height; a FIFO, so in practice a band about as long as the growing front)
  * in whatever memory the caller gives; its state lives in registers and 80 bytes of stack.
  * free_space reads the mask once per scanned row and keeps its state in rows[] (L1 on hardware
- * for the per-row re-reads). */
+ * for the per-row re-reads); 2.3 KB of stack (the band buffers, the DMA job). */
+
+#include "bvb/dma.h"
 
 	.section .l1.text, "ax"
 
@@ -64,18 +81,66 @@
  * a pass turns S back into boundaries: decided -> S ^ 0x8000, open (-1) -> -1.
  * Limit: height <= 32767 (boundaries are int16). */
 
-#define FS_HEIGHT 40
-#define FS_MINGAP 44
-#define FS_ROWS 48
+/* The frame: outgoing argument space, the band state, one DMA transfer and job, two band
+ * buffers of at most FS_BAND_BYTES each (in L1 bank B with the stack). */
+#define FS_BAND_BYTES 1024
+#define F_DMA 12	/* 1: the mask's rows come in by DMA */
+#define F_LEFT 16	/* rows of the current band still to scan */
+#define F_Y 20		/* y across the calls */
+#define F_NEXTY 24	/* rows 0 .. F_NEXTY - 1 of the strip are still to fetch */
+#define F_B 28		/* rows a band */
+#define F_SW 32		/* the strip's columns */
+#define F_COL 36	/* the strip's column in row 0 of the mask */
+#define F_STRIDE 40
+#define F_PREP 44	/* the prepared transfer's shape: columns << 5 | rows (0: none) */
+#define F_INFL 48	/* rows of the band in flight */
+#define F_PEND 52	/* 1 while a job is outstanding */
+#define F_CUR 56	/* the band buffer being scanned */
+#define F_OTHER 60	/* the other */
+#define F_FRETS 64	/* .Lfs_fetch's return address */
+#define F_FBUF 68	/* .Lfs_fetch's buffer */
+#define F_MASK 72
+#define F_NRETS 212
+#define F_WIDTH 76
+#define F_X 80		/* struct bvb_dma_xfer, 24 bytes */
+#define F_JOB 104	/* BVB_DMA_JOB_BYTES = 112 */
+#define F_BUF0 216	/* F_NRETS at 212 */
+#define F_BUF1 (F_BUF0 + FS_BAND_BYTES)
+#define FS_LOC (F_BUF1 + FS_BAND_BYTES)
+#define FS_HEIGHT (40 + 4 + FS_LOC)
+#define FS_MINGAP (44 + 4 + FS_LOC)
+#define FS_ROWS (48 + 4 + FS_LOC)
 
 	.align 4
 	.global _bvb_free_space_asm
 	.type _bvb_free_space_asm, STT_FUNC
 _bvb_free_space_asm:
 	[--sp] = (r7:4, p5:3);
+	[--sp] = rets;
+	p0 = FS_LOC (z);
+	sp -= p0;
 	cc = r2 <= 0;
 	if cc jump .Lfs_ret;
 	p5 = r1;			/* mask stride */
+	[sp + F_STRIDE] = r1;
+	[sp + F_X + DMAX_SS] = r1;
+	[sp + F_COL] = r0;
+	[sp + F_MASK] = r0;
+	[sp + F_WIDTH] = r2;
+	/* Mask rows by DMA when the mask starts in SDRAM (through the data cache its line fills
+	 * cost 16% of the call at 320x240); the first band, the bottom rows, is the one whose
+	 * transfer DMA could refuse (the mask ending past SDRAM): then the direct path. */
+	r3.l = 0x0000;
+	r3.h = 0x0200;
+	cc = r0 < r3 (iu);
+	r4 = cc;
+	[sp + F_DMA] = r4;
+	r4 = 0;
+	[sp + F_PEND] = r4;
+	[sp + F_PREP] = r4;
+.Lfs_restart:
+	[sp + F_COL] = r0;
+	p5 = r1;
 	r3 = [sp + FS_HEIGHT];
 	p4 = [sp + FS_ROWS];
 	r5 = [sp + FS_MINGAP];
@@ -108,6 +173,19 @@ _bvb_free_space_asm:
 	r1 = 64;
 	if !cc r1 = r2;
 	m3 = r1;
+	/* rows a band: as many strip rows as fit FS_BAND_BYTES, 1 to 16 */
+	r0 = 1;
+	r3 = r1;
+	p0 = 15;
+	r2 = FS_BAND_BYTES (z);
+	lsetup (.Lfs_b0, .Lfs_b1) lc0 = p0;
+.Lfs_b0:
+	r3 = r3 + r1;
+	cc = r3 <= r2;
+	r6 = cc;
+.Lfs_b1:
+	r0 = r0 + r6;
+	[sp + F_B] = r0;
 	/* G = min(min_gap - 1, 32767) */
 	r5 += -1;
 	r1 = 32767 (x);
@@ -137,6 +215,35 @@ _bvb_free_space_asm:
 	r1 += -1;
 	m2 = r1;
 	p3 = i3;
+	r0 = b1;
+	r0 += 2;
+	[sp + F_LEFT] = r0;		/* the direct path never reaches the end of a band */
+	r0 = [sp + F_DMA];
+	cc = r0 == 0;
+	if cc jump .Lfs_rows;
+	/* bands from the bottom: the first in and waited for, the second started */
+	r1 = m2;			/* the strip's columns: 2 (pairs - 1 + 1) + odd */
+	r1 += 1;
+	r1 <<= 1;
+	r0 = m1;
+	r1 = r1 + r0;
+	[sp + F_SW] = r1;
+	[sp + F_X + DMAX_DS] = r1;
+	[sp + F_X + DMAX_W] = r1;
+	p5 = r1;			/* rows in L1 are the strip's width apart */
+	r0 = b1;
+	r0 += 1;
+	[sp + F_NEXTY] = r0;
+	r0 = F_BUF0 (z);
+	r1 = sp;
+	r0 = r0 + r1;
+	[sp + F_OTHER] = r0;
+	r1 = FS_BAND_BYTES (z);
+	r1 = r0 + r1;
+	[sp + F_CUR] = r1;
+	call .Lfs_fetch;
+	call .Lfs_next;
+.Lfs_rows:
 	p1 = b1;			/* y */
 	r0 = b1;
 	r6 = pack (r0.l, r0.l);
@@ -160,26 +267,29 @@ _bvb_free_space_asm:
 	cc = p2 < 0;
 	if cc jump .Lfs_odd;
 	/* first pair's loads; the loop loads one pair ahead */
-	mnop || r1 = b[p0++] (z) || r2.l = w[i0++];
+	/* At most one access of rows[] per instruction, and none beside the first-column mask
+	 * load: the loads and stores of rows[] (int16, at any even address) and of the mask
+	 * meet in one sub-bank as often as not (L1 sub-bank collisions, --timing bf537). */
+	r1 = b[p0++] (z);
 	r0 = b[p0++] (z);
 	r0 = pack (r0.l, r1.l);
 	cc = p2 == 0;
 	if cc jump .Lfs_last;
 	lsetup (.Lfs_pair, .Lfs_pair_end) lc0 = p2;
 .Lfs_pair:
-	r0 = r0 << 15 (v, s) || r1 = b[p0++] (z) || r2.h = w[i0++];
-	r0 = r7 -|- r0;
-	r0 = r6 +|+ r0 (s);
+	r0 = r0 << 15 (v, s) || r2.l = w[i0++];
+	r0 = r7 -|- r0 || r2.h = w[i0++];
+	r0 = r6 +|+ r0 (s) || r1 = b[p0++] (z);
 	r2 = min (r2, r0) (v);
 	r0 = r5 -|- r2 (s);
 	r0 = r0 & r4;
 	r2 = r2 ^ r0;
 	r3 = max (r3, r2) (v) || r0 = b[p0++] (z) || w[i1++] = r2.l;
 .Lfs_pair_end:
-	r0 = pack (r0.l, r1.l) || w[i1++] = r2.h || r2.l = w[i0++];
+	r0 = pack (r0.l, r1.l) || w[i1++] = r2.h;
 .Lfs_last:
-	r0 = r0 << 15 (v, s) || r2.h = w[i0++];
-	r0 = r7 -|- r0;
+	r0 = r0 << 15 (v, s) || r2.l = w[i0++];
+	r0 = r7 -|- r0 || r2.h = w[i0++];
 	r0 = r6 +|+ r0 (s);
 	r2 = min (r2, r0) (v);
 	r0 = r5 -|- r2 (s);
@@ -209,9 +319,19 @@ _bvb_free_space_asm:
 	cc = r0 == r4;
 	if cc jump .Lfs_strip_end;
 	p3 -= p5;
+	r0 = [sp + F_LEFT];
+	r0 += -1;
+	[sp + F_LEFT] = r0;
+	cc = r0 == 0;
+	if cc jump .Lfs_switch;
 .Lfs_row_end:
 	p1 += -1;
 .Lfs_strip_end:
+	call .Lfs_wait;			/* a band still in flight when the strip ended early */
+	r0 = [sp + F_COL];
+	r0 += 32;
+	r0 += 32;
+	[sp + F_COL] = r0;
 	r0 = i3;
 	r0 += 32;
 	r0 += 32;
@@ -224,6 +344,122 @@ _bvb_free_space_asm:
 	cc = r0 == 0;
 	if !cc jump .Lfs_strip;
 	lc1 = r0;
+	jump.s .Lfs_decode;
+
+	/* The band's last row is scanned: the next band (in flight) is waited for and scanned
+	 * from its last row, and the one above it is started into the buffer just left. */
+.Lfs_switch:
+	r0 = [sp + F_PEND];
+	cc = r0 == 0;
+	if cc jump .Lfs_row_end;	/* row 0 was the last */
+	[sp + F_Y] = p1;
+	call .Lfs_next;
+	p1 = [sp + F_Y];
+	jump .Lfs_row_end;
+
+	/* Waits for the band in flight, makes it the current one (P3 at its last row, F_LEFT
+	 * its rows), starts the next into the other buffer. Clobbers R0-R3, P0-P2. */
+.Lfs_next:
+	r0 = rets;
+	[sp + F_NRETS] = r0;
+	call .Lfs_wait;
+	r0 = [sp + F_CUR];
+	r1 = [sp + F_OTHER];
+	[sp + F_CUR] = r1;
+	[sp + F_OTHER] = r0;
+	r0 = [sp + F_INFL];
+	[sp + F_LEFT] = r0;
+	r0 += -1;
+	r2 = [sp + F_SW];
+	r0 *= r2;
+	r0 = r0 + r1;
+	p3 = r0;
+	r0 = [sp + F_NEXTY];
+	cc = r0 == 0;
+	if cc jump .Lfs_sw_done;
+	r0 = [sp + F_OTHER];
+	call .Lfs_fetch;
+.Lfs_sw_done:
+	r0 = [sp + F_NRETS];
+	rets = r0;
+	rts;
+
+	/* Waits for the job in flight, if any. Clobbers R0, P2. */
+.Lfs_wait:
+	r0 = [sp + F_PEND];
+	cc = r0 == 0;
+	if cc jump .Lfs_w_ret;
+	r0 = 0;
+	[sp + F_PEND] = r0;
+	r0 = rets;
+	[sp + F_FRETS] = r0;
+	call _bvb_dma_wait;
+	r0 = [sp + F_FRETS];
+	rets = r0;
+.Lfs_w_ret:
+	rts;
+
+	/* Starts the next band up (F_B rows or what is left below F_NEXTY) into the buffer at
+	 * r0: the slot only re-addressed when its shape is the one prepared. Clobbers R0-R3,
+	 * P0-P2. DMA refuses none of these transfers (the whole mask was found reachable, the
+	 * counts are at most the first band's); should it, the core copies the band. */
+.Lfs_fetch:
+	[sp + F_FBUF] = r0;
+	[sp + F_X + DMAX_DST] = r0;
+	r0 = rets;
+	[sp + F_FRETS] = r0;
+	r1 = [sp + F_NEXTY];
+	r2 = [sp + F_B];
+	r2 = min (r1, r2);
+	[sp + F_INFL] = r2;
+	[sp + F_X + DMAX_ROWS] = r2;
+	r1 = r1 - r2;
+	[sp + F_NEXTY] = r1;
+	r3 = [sp + F_STRIDE];
+	r1 *= r3;
+	r3 = [sp + F_COL];
+	r1 = r1 + r3;
+	[sp + F_X + DMAX_SRC] = r1;
+	r1 = [sp + F_SW];
+	r1 <<= 5;
+	r1 = r1 | r2;
+	r3 = [sp + F_PREP];
+	cc = r1 == r3;
+	[sp + F_PREP] = r1;
+	r2 = sp;
+	r0 = F_JOB (z);
+	r0 = r0 + r2;
+	r1 = F_X (z);
+	r2 = r2 + r1;
+	r1 = 0;
+	if cc jump .Lff_move;
+	call _bvb_dma_prepare;
+	cc = r0 == 0;
+	if !cc jump .Lff_core;
+	jump.s .Lff_start;
+.Lff_move:
+	call _bvb_dma_move;
+.Lff_start:
+	r1 = sp;
+	r0 = F_JOB (z);
+	r0 = r0 + r1;
+	r1 = 1;
+	call _bvb_dma_start;
+	r0 = 1;
+	[sp + F_PEND] = r0;
+.Lff_ret:
+	r0 = [sp + F_FRETS];
+	rets = r0;
+	rts;
+.Lff_core:
+	/* DMA refused: the whole call again on the direct path (none of the counts can grow
+	 * past the first band's, so in practice only the first transfer can be refused) */
+	r0 = 0;
+	[sp + F_DMA] = r0;
+	r0 = [sp + F_MASK];
+	r1 = [sp + F_STRIDE];
+	r2 = [sp + F_WIDTH];
+	jump .Lfs_restart;
 
 .Lfs_decode:
 	r2.l = 0x8000;
@@ -239,6 +475,9 @@ _bvb_free_space_asm:
 .Lfs_dec_end:
 	w[p0++] = r0;
 .Lfs_ret:
+	p0 = FS_LOC (z);
+	sp = sp + p0;
+	rets = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;
 	.size _bvb_free_space_asm, . - _bvb_free_space_asm

@@ -20,7 +20,17 @@
  *   either profile absorbed through I0 and I1) after the overlap's first n mod 4 bytes have
  *   been taken one by one; a lone last 4-byte chunk gets one more SAA, the lanes are summed
  *   as unsigned halves with the MACs, and S(t) is compared with the best by
- *   cross-multiplication. Lower bound: (w - |t|) / 4 cycles per shift, the SAA rate.
+ *   cross-multiplication (out of line: only when S(t) is below the best S, which with the
+ *   overlap never growing outwards is needed for f(t) to be below the best f).
+ *   p2's words are first copied onto the stack (L1 bank B; w / 4 words, 2 cycles each) when
+ *   the profiles' addresses agree in bits 13:12 and neither is in bank B: the two loads of
+ *   every SAA then come from different banks
+ *   (profiles in SDRAM sit in bank A's data cache, where the model puts two lines in one
+ *   sub-bank whenever their address bits 13:12 agree: one collision per SAA before).
+ *   Lower bound: (w - |t|) / 4 cycles per shift, the SAA rate (two 4-byte loads and one SAA
+ *   per cycle), 19,240 cycles at w = 320, rho = 160. Profiles not in the data cache would
+ *   add their 2 w bytes from SDRAM, at most 2 w / 0.5 = 1,280 cycles at w = 320 of line fills;
+ *   in the bench and in the odometry (which made them just before) they are in it.
  *
  * Measured (bfbench bench):
  *   profile, band of h / 2 rows (60, 120, 240):
@@ -30,10 +40,11 @@
  *     160x120: C 105,375, asm 13,056 (8.1x); 320x240: C 402,634, asm 35,448 (11.4x);
  *     640x480: C 1,573,222, asm 109,192 (14.4x); bound 4,820 / 19,240 / 76,880 (SAA rate);
  *     about 50 cycles a shift go to set-up, the 0..3 odd bytes, the lane sum and the
- *     comparison.
+ *     comparison. (Before the copy of p2; now 12,668 / 34,593 / 107,493.)
  * Both kernels read their inputs only within the words that hold them (circular buffers over
  * each row or profile). Working set: the profile's 16-bit column sums (scratch, 1.3 KB at 640
- * wide; L1 on hardware); the shift search keeps everything in registers.
+ * wide; L1 on hardware); the shift search: a copy of p2 on the stack (w bytes, rounded to words)
+ * when the two profiles would share a sub-bank, the rest in registers.
  *
  * Modelled (bfbench bench, --timing bf537):
  *   profile, frames in SDRAM, scratch in L1 bank B: the band's rows come in by memory DMA
@@ -47,9 +58,21 @@
  *     from the monitor's copy into SDRAM (a camera frame never is), and 173,889 at 320x240,
  *     where two rows a pass fall in the same sets of the 2-way cache and lines were filled
  *     again and again.
- *   shift: 160x120 18,050 (1.38x the simulator's count), 320x240 55,042 (1.55x): the profiles
- *     are small and stay in the data cache after their first lines; the rest is those fills.
- *     Bound: the SAA rate (the bus, 2 w bytes once, is far below it). */
+ *   shift: 160x120 12,664, 320x240 34,589 (1.80x the bound of 19,240), 640x480 107,489
+ *     (1.40x of 76,880); the simulator's own counts are the same but for 4 cycles: no
+ *     collisions, no line fills (the profiles are in the data cache), 7 address-register
+ *     cycles. Before the copy of p2: 18,050 and 55,042, of which 19,602 were sub-bank
+ *     collisions of the SAA's two loads. Where the rest goes at 320x240 (bfbench profile):
+ *     the SAA loops take 18,880 of the bound's 19,240; each shift costs some 47 cycles more:
+ *     the n mod 4 odd bytes one by one (5 cycles a byte and 7 to set up, about 11 a shift on
+ *     average), the last lone SAA and its branch (about 5), the lane sum (6), pointers, loop
+ *     counts and the SAA loop's set-up (about 12), the branch over the odd bytes (about 2
+ *     on average, mispredicted 1 time in 4), the curve store and the test against the best
+ *     (2), of which 1,976 are branch cycles. 160 k-steps of two shifts: 95 cycles a step
+ *     over their SAA loops. Toward the bound: a zero-padded copy of p2 turns the odd bytes
+ *     into one more SAA and a running correction of p1's bytes, and the lanes' sum into one
+ *     instruction (R = A1.L + A1.H, R = A0.L + A0.H, exact while w <= 512); L1 code memory
+ *     (48 KB, 8 bytes left on this tree) has no room for it beside the present path today. */
 
 	.section .rodata
 	.align 4
@@ -300,16 +323,19 @@ _bvb_scanline_profile_u8_asm:
 
 
 /* S(t) for one shift: I0 -> p1[i0], I1 -> p2[i0 + t] (circular over each profile's words),
- * r4 = overlap n, p2 = n >> 3. Result in r5. Uses r0-r3, a0, a1, p0, p1, lc0.
- * The n mod 4 odd bytes are taken first, one by one; SAA does the rest. */
+ * r4 = overlap n, p2 = n >> 3. Result in r5. Uses r0-r3, a0, a1, p0, p1, m3, lc0.
+ * The n mod 4 odd bytes are taken first, one by one (I0 and I1 then step past them by the
+ * circular DAG arithmetic, so that no read leaves the profiles' words); SAA does the rest.
+ * For n < 4 the SAA part reads a word pair and adds nothing. */
 .macro SAD_AT id
 	r5 = 0;
 	r2 = 3;
 	r2 = r2 & r4;
 	cc = r2 == 0;
-	if cc jump .Ls_body_\id;
+	if cc jump .Ls_body_\id;	/* not predicted: 3 overlaps in 4 have odd bytes */
 	p0 = i0;
 	p1 = i1;
+	m3 = r2;
 	lc0 = r2;
 	lsetup (.Lt0_\id, .Lt1_\id) lc0;
 .Lt0_\id:
@@ -319,8 +345,8 @@ _bvb_scanline_profile_u8_asm:
 	r0 = abs r0;
 .Lt1_\id:
 	r5 = r5 + r0;
-	i0 = p0;
-	i1 = p1;
+	i0 += m3;
+	i1 += m3;
 .Ls_body_\id:
 	disalgnexcpt || r0 = [i0++] || r2 = [i1++];
 	disalgnexcpt || r1 = [i0++] || r3 = [i1++];
@@ -346,29 +372,19 @@ _bvb_scanline_profile_u8_asm:
 	r5 = r5 + r0;
 .endm
 
-/* S(t) when the overlap n = r4 is below 4: byte by byte (SAA's read-ahead would touch the
- * word past a profile). */
-.macro SAD_SMALL id
-	r5 = 0;
-	p0 = i0;
-	p1 = i1;
-	lc0 = r4;
-	lsetup (.Lu0_\id, .Lu1_\id) lc0;
-.Lu0_\id:
-	r0 = b[p0++] (z);
-	r1 = b[p1++] (z);
-	r0 = r0 - r1 (ns);
-	r0 = abs r0;
-.Lu1_\id:
-	r5 = r5 + r0;
-.endm
-
 /* Keep shift t if S * n_best < S_best * n (f(t) below the best so far). r5 = S, r4 = n,
  * r6 = S_best, r7 = n_best, p3 = best t. The search runs outwards, so n <= n_best always:
- * S >= S_best then already means f(t) >= f(best), without the products. */
+ * S >= S_best then already means f(t) >= f(best), without the products. That is the common
+ * case, so it falls through (1 cycle); the products are out of line (KEEP_BODY, after the
+ * function's return). */
 .macro KEEP_IF_BETTER treg, id
 	cc = r5 < r6 (iu);
-	if !cc jump .Lk_skip_\id (bp);
+	if cc jump .Lk_do_\id;
+.Lk_back_\id:
+.endm
+
+.macro KEEP_BODY treg, id
+.Lk_do_\id:
 	r0 = r5;
 	r0 *= r7;
 	r1 = r6;
@@ -377,11 +393,11 @@ _bvb_scanline_profile_u8_asm:
 	if cc r6 = r5;
 	if cc r7 = r4;
 	if cc p3 = \treg;
-.Lk_skip_\id:
+	jump .Lk_back_\id;
 .endm
 
-/* Shifts -k and +k (k = p4 after the increments), by the given S(t) macro. */
-.macro KBODY sad, id
+/* Shifts -k and +k (k = p4 after the increments). */
+.macro KBODY id
 	p4 += 1;
 	p5 += -1;
 	r4 += -1;			/* n = w - k for both shifts */
@@ -392,14 +408,14 @@ _bvb_scanline_profile_u8_asm:
 	i0 = m0;
 	i0 += m2;
 	i1 = m1;
-	\sad n\id
+	SAD_AT n\id
 	[i2--] = r5;
 	KEEP_IF_BETTER p5, n\id
 	/* t = +k: p1[0..w-k) against p2[k..w). */
 	i0 = m0;
 	i1 = m1;
 	i1 += m2;
-	\sad p\id
+	SAD_AT p\id
 	[i3++] = r5;
 	KEEP_IF_BETTER p4, p\id
 .endm
@@ -410,20 +426,65 @@ _bvb_scanline_profile_u8_asm:
 	.type _bvb_scanline_shift_u8_asm, STT_FUNC
 _bvb_scanline_shift_u8_asm:
 	[--sp] = (r7:4, p5:3);
-	r4 = 0;
-	[--sp] = r4;			/* where the curve goes when there is none */
+	[--sp] = fp;
+	fp = sp;			/* rho at [fp + 44], result [fp + 48], curve [fp + 52] */
 	m0 = r0;			/* p1 */
 	m1 = r1;			/* p2 */
 	m2 = r2;			/* w */
-	i0 = r0;
+	/* p2's words onto the stack (L1 bank B), unless p1 or p2 is in bank B already or their
+	 * addresses differ in bits 13:12 (the sub-bank in L1 and, the model's assumption, in
+	 * the data cache): the search's
+	 * dual loads then never meet in one sub-bank (through the data cache, as in SDRAM, both
+	 * profiles would be in bank A's cache, often in one sub-bank: 36% of the call). */
+	r3 = r0 ^ r1;
+	r4 = 0x3000 (z);
+	r3 = r3 & r4;
+	cc = r3 == 0;
+	if !cc jump .Lsh_nocopy;	/* other sub-banks (address bits 13:12) */
+	r3 = r0 >> 15;
+	r4 = 0x1ff2 (z);
+	r4 <<= 4;			/* 0xff900000 >> 15 */
+	cc = r3 == r4;
+	if cc jump .Lsh_nocopy;
+	r3 = r1 >> 15;
+	cc = r3 == r4;
+	if cc jump .Lsh_nocopy;		/* p2 in bank B already */
+	r3 = -4;
+	r4 = r1 & r3;
+	r5 = r1 + r2;
+	r5 += -1;
+	r5 = r5 & r3;
+	r5 = r5 - r4;
+	r5 += 4;			/* bytes of the words holding p2 */
+	p0 = r4;
+	p1 = r5;
+	sp -= p1;
+	r5 >>= 2;
+	p2 = r5;
+	p1 = sp;
+	lsetup (.Lsh_cp0, .Lsh_cp1) lc0 = p2;
+.Lsh_cp0:
+	r0 = [p0++];
+.Lsh_cp1:
+	[p1++] = r0;
+	r0 = m1;
+	r3 = 3;
+	r0 = r0 & r3;
+	r1 = sp;
+	r0 = r0 + r1;
+	m1 = r0;			/* p2 in its copy, at the same byte offset */
+.Lsh_nocopy:
+	r4 = 0;
+	[--sp] = r4;			/* where the curve goes when there is none */
+	i0 = m0;
 	CIRC i0, b0, l0, m2
 	i1 = m1;
 	CIRC i1, b1, l1, m2
-	r0 = [sp + 44];			/* rho */
+	r0 = [fp + 44];			/* rho */
 	r1 = m2;
 	r1 = r1 - r0;			/* T = w - rho */
 	m3 = r1;
-	r0 = [sp + 52];			/* curve */
+	r0 = [fp + 52];			/* curve */
 	cc = r0 == 0;
 	if !cc jump .Lsh_curve (bp);
 	r0 = sp;
@@ -440,55 +501,31 @@ _bvb_scanline_shift_u8_asm:
 	i2 = r0;
 	i3 = r0;
 .Lsh_zero:
+	r0 = m3;
+	p5 = r0;			/* T: the k loop's count (m3 is SAD_AT's) */
 	/* t = 0 is the first best. */
 	r4 = m2;			/* n = w - k, k = 0 */
 	r0 = r4 >> 3;
 	p2 = r0;
 	i0 = m0;
 	i1 = m1;
-	cc = r4 <= 3;
-	if !cc jump .Lsh_zero_big (bp);
-	SAD_SMALL z
-	jump.s .Lsh_zero_done;
-.Lsh_zero_big:
 	SAD_AT z
-.Lsh_zero_done:
 	r6 = r5;
 	r7 = r4;
 	p3 = 0;
 	[i2--] = r5;
 	i3 += 4;
+	cc = p5 == 0;
+	if cc jump .Lsh_done;
+	lsetup (.Lsh_k, .Lsh_k_end) lc1 = p5;
 	p4 = 0;				/* k */
 	p5 = 0;				/* -k */
-	/* k = 1..K1 have overlaps of 4 or more (SAA), the rest (when rho < 4) are byte by byte. */
-	r0 = m3;			/* T */
-	r1 = r4;
-	r1 += -4;
-	r2 = 0;
-	r1 = max (r1, r2);
-	r1 = min (r1, r0);		/* K1 = min(T, max(w - 4, 0)) */
-	r0 = r0 - r1;
-	m3 = r0;			/* K2 = T - K1 */
-	cc = r1 == 0;
-	if cc jump .Lsh_small;
-	p0 = r1;
-	lsetup (.Lsh_k, .Lsh_k_end) lc1 = p0;
 .Lsh_k:
-	KBODY SAD_AT, k
+	KBODY k
 .Lsh_k_end:
 	nop;
-.Lsh_small:
-	r0 = m3;
-	cc = r0 == 0;
-	if cc jump .Lsh_done (bp);
-	p0 = r0;
-	lsetup (.Lsh_s, .Lsh_s_end) lc1 = p0;
-.Lsh_s:
-	KBODY SAD_SMALL, s
-.Lsh_s_end:
-	nop;
 .Lsh_done:
-	r0 = [sp + 48];			/* result */
+	r0 = [fp + 48];			/* result */
 	p0 = r0;
 	r0 = p3;
 	[p0] = r0;
@@ -498,7 +535,10 @@ _bvb_scanline_shift_u8_asm:
 	l1 = 0;
 	l2 = 0;
 	l3 = 0;
-	sp += 4;
+	sp = fp;
+	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;
+	KEEP_BODY p5, nk
+	KEEP_BODY p4, pk
 	.size _bvb_scanline_shift_u8_asm, . - _bvb_scanline_shift_u8_asm
