@@ -304,7 +304,7 @@ void Checker::place_streaming(CheckCall &call, size_t scratch, Rng &rng) {
 void Checker::add(CheckCall call, Observer observer) {
   // The case number counts every call the family makes, queued or not, so -k and --case leave
   // every other case's number and stream as they are.
-  call.case_id = call.kernel + ":" + std::to_string(case_no_);
+  call.case_id = case_id(call.kernel, case_no_);
   if (opts_.adversarial) make_adversarial(call, rng_);
   rng_ = case_stream(opts_.seed, family_, ++case_no_);
   if (!wants(call.kernel)) return;
@@ -322,7 +322,7 @@ std::vector<const CheckCall *> Checker::pending() const {
 std::vector<std::string> Checker::coverage_gaps() const {
   std::vector<std::string> gaps;
   std::string only_kernel;
-  if (!opts_.only_case.empty()) only_kernel = opts_.only_case.substr(0, opts_.only_case.rfind(':'));
+  if (!opts_.only_case.empty()) only_kernel = case_kernel(opts_.only_case);
   for (const auto &k : target_.registry().kernels()) {
     if (!glob_match(opts_.kernel_glob, k.name)) continue;
     if (!only_kernel.empty() && resolve(only_kernel) != k.name) continue;
