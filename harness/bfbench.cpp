@@ -224,20 +224,11 @@ int cmd_bench(int argc, char **argv) {
   auto rows = run_bench(target, opts);
   if (rows.empty()) throw InputError("no kernel matches '" + opts.kernel_glob + "' (bfbench list)");
   std::fputs(bench_table(rows, target.null_call_cycles()).c_str(), stdout);
-  if (!json_path.empty()) {
-    std::string j = bench_json(rows, target.null_call_cycles());
-    write_file_atomic(json_path, j.data(), j.size());
-  }
-  if (!csv_path.empty()) {
-    std::string c = bench_csv(rows);
-    write_file_atomic(csv_path, c.data(), c.size());
-  }
-  if (!md_path.empty()) {
-    std::string m = bench_markdown(rows);
-    write_file_atomic(md_path, m.data(), m.size());
-  }
+  if (!json_path.empty()) write_file_atomic(json_path, bench_json(rows, target.null_call_cycles()));
+  if (!csv_path.empty()) write_file_atomic(csv_path, bench_csv(rows));
+  if (!md_path.empty()) write_file_atomic(md_path, bench_markdown(rows));
   for (const auto &r : rows)
-    if (!r.error.empty()) return 1;
+    if (!r.error.empty()) return kExitFailed;
   return 0;
 }
 
@@ -502,14 +493,8 @@ int cmd_profile(int argc, char **argv) {
     return kExitFailed;
   }
   std::fputs(profile_text(p, size_t(top)).c_str(), stdout);
-  if (!json_path.empty()) {
-    std::string j = profile_json(p);
-    write_file_atomic(json_path, j.data(), j.size());
-  }
-  if (!html_path.empty()) {
-    std::string h = profile_html(p);
-    write_file_atomic(html_path, h.data(), h.size());
-  }
+  if (!json_path.empty()) write_file_atomic(json_path, profile_json(p));
+  if (!html_path.empty()) write_file_atomic(html_path, profile_html(p));
   return 0;
 }
 

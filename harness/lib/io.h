@@ -32,6 +32,9 @@ std::vector<uint8_t> read_file(const std::string &path, size_t max_bytes = kMaxI
 // over it; a symbolic link is followed (the file it names is replaced, the link kept); a
 // character device (/dev/null) or a FIFO is written straight; anything else is refused.
 void write_file_atomic(const std::string &path, const void *data, size_t size);
+inline void write_file_atomic(const std::string &path, const std::string &text) {
+  write_file_atomic(path, text.data(), text.size());
+}
 inline void write_file_atomic(const std::string &path, const std::vector<uint8_t> &bytes) {
   write_file_atomic(path, bytes.data(), bytes.size());
 }

@@ -76,4 +76,14 @@ std::string budget_key_case(const std::string &key) {
   return slash == std::string::npos ? key : key.substr(slash + 1);
 }
 
+std::vector<std::string> split_list(const std::string &text) {
+  std::vector<std::string> out;
+  for (size_t a = 0, b; a <= text.size(); a = b + 1) {
+    b = text.find(',', a);
+    if (b == std::string::npos) b = text.size();
+    out.push_back(text.substr(a, b - a));
+  }
+  return out;
+}
+
 }  // namespace bvb

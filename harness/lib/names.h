@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace bvb {
 
@@ -34,5 +35,9 @@ std::string budget_key(const std::string &kernel, const std::string &impl, const
 std::string budget_key_kernel(const std::string &key);
 // The case of a budget key (the text after the last slash).
 std::string budget_key_case(const std::string &key);
+
+// The items of a comma-separated list ("a,b" gives a and b; "" gives one empty item): option
+// names ("-k,--kernel"), scene specs.
+std::vector<std::string> split_list(const std::string &text);
 
 }  // namespace bvb

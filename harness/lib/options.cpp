@@ -24,7 +24,7 @@ struct CommandLine::Option {
   bool repeatable = false, required = false;
   int seen = 0;
   // Takes one value (never called for a flag); throws UsageError naming `as`, the name used.
-  std::function<void(const std::string &as, const std::string &value)> take;
+  Take take;
   bool *flag = nullptr;
 
   std::string shown() const {
@@ -39,16 +39,6 @@ struct CommandLine::Option {
 };
 
 namespace {
-
-std::vector<std::string> split_names(const std::string &names) {
-  std::vector<std::string> out;
-  for (size_t a = 0, b; a <= names.size(); a = b + 1) {
-    b = names.find(',', a);
-    if (b == std::string::npos) b = names.size();
-    out.push_back(names.substr(a, b - a));
-  }
-  return out;
-}
 
 // The words of text in lines of at most width characters (a longer word stands alone), the
 // first starting at first_column, the others after indent spaces.
@@ -97,7 +87,14 @@ CommandLine &CommandLine::forms(std::vector<std::string> lines) {
   return *this;
 }
 
-CommandLine &CommandLine::add(std::unique_ptr<Option> o) {
+CommandLine &CommandLine::add(const std::string &names, const std::string &metavar, const std::string &help,
+                              Take take, bool repeatable) {
+  auto o = std::make_unique<Option>();
+  o->names = split_list(names);
+  o->metavar = metavar;
+  o->help = help;
+  o->take = std::move(take);
+  o->repeatable = repeatable;
   for (const auto &n : o->names)
     if (n.size() < 2 || n[0] != '-' || n == "-h" || n == "--help" || find(n))
       throw std::logic_error(command_ + ": option name '" + n + "' is malformed, reserved or declared twice");
@@ -106,20 +103,14 @@ CommandLine &CommandLine::add(std::unique_ptr<Option> o) {
 }
 
 CommandLine &CommandLine::flag(const std::string &names, bool *out, const std::string &help) {
-  auto o = std::make_unique<Option>();
-  o->names = split_names(names);
-  o->help = help;
-  o->flag = out;
-  return add(std::move(o));
+  add(names, "", help, nullptr);
+  options_.back()->flag = out;
+  return *this;
 }
 
 CommandLine &CommandLine::add_integer(const std::string &names, const std::string &metavar, long long lo,
                                       long long hi, std::function<void(long long)> set, const std::string &help) {
-  auto o = std::make_unique<Option>();
-  o->names = split_names(names);
-  o->metavar = metavar;
-  o->help = help;
-  o->take = [lo, hi, set](const std::string &as, const std::string &v) {
+  return add(names, metavar, help, [lo, hi, set](const std::string &as, const std::string &v) {
     char *end = nullptr;
     errno = 0;
     const long long n = std::strtoll(v.c_str(), &end, 10);
@@ -129,17 +120,12 @@ CommandLine &CommandLine::add_integer(const std::string &names, const std::strin
       throw UsageError(as + " wants an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got '" +
                        v + "'");
     set(n);
-  };
-  return add(std::move(o));
+  });
 }
 
 CommandLine &CommandLine::number(const std::string &names, const std::string &metavar, double lo, double hi,
                                  double *out, const std::string &help) {
-  auto o = std::make_unique<Option>();
-  o->names = split_names(names);
-  o->metavar = metavar;
-  o->help = help;
-  o->take = [lo, hi, out](const std::string &as, const std::string &v) {
+  return add(names, metavar, help, [lo, hi, out](const std::string &as, const std::string &v) {
     char *end = nullptr;
     errno = 0;
     const double n = v.empty() || std::isspace(uint8_t(v[0])) ? NAN : std::strtod(v.c_str(), &end);
@@ -149,18 +135,12 @@ CommandLine &CommandLine::number(const std::string &names, const std::string &me
       throw UsageError(as + " wants a number in " + range + ", got '" + v + "'");
     }
     *out = n;
-  };
-  return add(std::move(o));
+  });
 }
 
 CommandLine &CommandLine::text(const std::string &names, const std::string &metavar, std::string *out,
                                const std::string &help) {
-  auto o = std::make_unique<Option>();
-  o->names = split_names(names);
-  o->metavar = metavar;
-  o->help = help;
-  o->take = [out](const std::string &, const std::string &v) { *out = v; };
-  return add(std::move(o));
+  return add(names, metavar, help, [out](const std::string &, const std::string &v) { *out = v; });
 }
 
 CommandLine &CommandLine::choice(const std::string &names, const std::vector<std::string> &choices,
@@ -170,19 +150,14 @@ CommandLine &CommandLine::choice(const std::string &names, const std::vector<std
     metavar += (i ? "|" : "") + choices[i];
     listed += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i];
   }
-  auto o = std::make_unique<Option>();
-  o->names = split_names(names);
-  o->metavar = metavar;
-  o->help = help;
-  o->take = [choices, listed, out](const std::string &as, const std::string &v) {
+  return add(names, metavar, help, [choices, listed, out](const std::string &as, const std::string &v) {
     for (const auto &c : choices)
       if (v == c) {
         *out = v;
         return;
       }
     throw UsageError(as + " wants " + listed + ", got '" + v + "'");
-  };
-  return add(std::move(o));
+  });
 }
 
 namespace {
@@ -195,34 +170,17 @@ Size size_value(const std::string &as, const std::string &v, int max_dim) {
 }  // namespace
 
 CommandLine &CommandLine::size(const std::string &names, Size *out, const std::string &help, int max_dim) {
-  auto o = std::make_unique<Option>();
-  o->names = split_names(names);
-  o->metavar = "WxH";
-  o->help = help;
-  o->take = [out, max_dim](const std::string &as, const std::string &v) { *out = size_value(as, v, max_dim); };
-  return add(std::move(o));
+  return add(names, "WxH", help, [out, max_dim](const std::string &as, const std::string &v) { *out = size_value(as, v, max_dim); });
 }
 
 CommandLine &CommandLine::texts(const std::string &names, const std::string &metavar, std::vector<std::string> *out,
                                 const std::string &help) {
-  auto o = std::make_unique<Option>();
-  o->names = split_names(names);
-  o->metavar = metavar;
-  o->help = help;
-  o->repeatable = true;
-  o->take = [out](const std::string &, const std::string &v) { out->push_back(v); };
-  return add(std::move(o));
+  return add(names, metavar, help, [out](const std::string &, const std::string &v) { out->push_back(v); }, true);
 }
 
 CommandLine &CommandLine::sizes(const std::string &names, std::vector<Size> *out, const std::string &help,
                                 int max_dim) {
-  auto o = std::make_unique<Option>();
-  o->names = split_names(names);
-  o->metavar = "WxH";
-  o->help = help;
-  o->repeatable = true;
-  o->take = [out, max_dim](const std::string &as, const std::string &v) { out->push_back(size_value(as, v, max_dim)); };
-  return add(std::move(o));
+  return add(names, "WxH", help, [out, max_dim](const std::string &as, const std::string &v) { out->push_back(size_value(as, v, max_dim)); }, true);
 }
 
 CommandLine &CommandLine::required() {

@@ -87,7 +87,10 @@ class CommandLine {
 
  private:
   struct Option;
-  CommandLine &add(std::unique_ptr<Option> o);
+  // Takes one value of an option, given under the name `as`; throws UsageError naming it.
+  using Take = std::function<void(const std::string &as, const std::string &value)>;
+  CommandLine &add(const std::string &names, const std::string &metavar, const std::string &help, Take take,
+                   bool repeatable = false);
   CommandLine &add_integer(const std::string &names, const std::string &metavar, long long lo, long long hi,
                            std::function<void(long long)> set, const std::string &help);
   Option *find(const std::string &name) const;

@@ -165,16 +165,8 @@ void save_scene(const Context &c, const std::string &pipeline, const HeldoutScen
   SceneSpec spec = s.spec;
   spec.arena = file;
   // The keys that differ from a default spec's (format_scene_spec lists every key in order).
-  auto split = [](const std::string &t) {
-    std::vector<std::string> out;
-    for (size_t a = 0, b; a <= t.size(); a = b + 1) {
-      b = t.find(',', a);
-      if (b == std::string::npos) b = t.size();
-      out.push_back(t.substr(a, b - a));
-    }
-    return out;
-  };
-  const std::vector<std::string> mine = split(format_scene_spec(spec)), plain = split(format_scene_spec(SceneSpec{}));
+  const std::vector<std::string> mine = split_list(format_scene_spec(spec)),
+                                 plain = split_list(format_scene_spec(SceneSpec{}));
   std::string keys;
   for (size_t i = 0; i < mine.size(); ++i)
     if (i >= plain.size() || mine[i] != plain[i]) keys += (keys.empty() ? "" : ",") + mine[i];
