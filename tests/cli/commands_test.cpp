@@ -26,6 +26,13 @@ void expect_usage_error(const std::string &cmd, const std::string &args, const s
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
+struct Mistake {
+  std::string cmd, args, part;
+};
+void expect_usage_errors(const std::vector<Mistake> &mistakes) {
+  for (const auto &m : mistakes) expect_usage_error(m.cmd, m.args, m.part);
+}
+
 TEST(Commands, EveryCommandHasHelp) {
   for (const auto &cmd : kCommands)
     for (const char *h : {"--help", "-h"}) {
@@ -79,47 +86,55 @@ TEST(Commands, MissingValueIsExitTwo) {
 }
 
 TEST(Commands, MalformedValuesAreExitTwo) {
-  expect_usage_error("bench", "--size 12x", "--size wants WxH (1..4096), got '12x'");
-  expect_usage_error("bench", "--size 160x120 --size=0x5", "--size wants WxH");
-  expect_usage_error("run", "add_sat_u8 --in a.uyvy --in b.uyvy --out c.pgm --size 8x8x8", "--size wants WxH");
-  expect_usage_error("profile", "add_sat_u8 --size 3x", "--size wants WxH");
-  expect_usage_error("heldout", "--size x120", "--size wants WxH");
-  expect_usage_error("check", "--seed banana", "--seed wants an integer in 0..4294967295, got 'banana'");
-  expect_usage_error("check", "-j 0", "-j wants an integer in 1..256");
-  expect_usage_error("pipeline", "seg_avoid --frames 0", "--frames wants an integer in 1..1000000");
-  expect_usage_error("heldout", "--seed x", "--seed wants an integer");
-  expect_usage_error("hs-accuracy", "--alpha 7.9", "--alpha wants a number in 8..256");
-  expect_usage_error("bench", "--timing fast", "--timing wants none or bf537, got 'fast'");
-  expect_usage_error("profile", "add_sat_u8 --timing none", "--timing wants bf537, got 'none'");
-  expect_usage_error("check", "--campaign=yes", "--campaign takes no value");
+  expect_usage_errors({
+      {"bench", "--size 12x", "--size wants WxH (1..4096), got '12x'"},
+      {"bench", "--size 160x120 --size=0x5", "--size wants WxH"},
+      {"run", "add_sat_u8 --in a.uyvy --in b.uyvy --out c.pgm --size 8x8x8", "--size wants WxH"},
+      {"profile", "add_sat_u8 --size 3x", "--size wants WxH"},
+      {"heldout", "--size x120", "--size wants WxH"},
+      {"check", "--seed banana", "--seed wants an integer in 0..4294967295, got 'banana'"},
+      {"check", "-j 0", "-j wants an integer in 1..256"},
+      {"pipeline", "seg_avoid --frames 0", "--frames wants an integer in 1..1000000"},
+      {"heldout", "--seed x", "--seed wants an integer"},
+      {"hs-accuracy", "--alpha 7.9", "--alpha wants a number in 8..256"},
+      {"bench", "--timing fast", "--timing wants none or bf537, got 'fast'"},
+      {"profile", "add_sat_u8 --timing none", "--timing wants bf537, got 'none'"},
+      {"check", "--campaign=yes", "--campaign takes no value"},
+  });
 }
 
 TEST(Commands, RepeatedOptionIsExitTwo) {
-  expect_usage_error("check", "--seeds 1 --seeds 2", "--seeds given more than once");
-  expect_usage_error("check", "-k a --kernel b", "--kernel given more than once");
-  expect_usage_error("run", "add_sat_u8 --in a.pgm --out b.pgm --out c.pgm", "--out given more than once");
-  expect_usage_error("profile", "add_sat_u8 --size 8x8 --size 16x16", "--size given more than once");
-  expect_usage_error("pipeline", "seg_avoid --csv a --csv b", "--csv given more than once");
-  expect_usage_error("scene", "--out a --out b", "--out given more than once");
-  expect_usage_error("heldout", "--quiet --quiet", "--quiet given more than once");
+  expect_usage_errors({
+      {"check", "--seeds 1 --seeds 2", "--seeds given more than once"},
+      {"check", "-k a --kernel b", "--kernel given more than once"},
+      {"run", "add_sat_u8 --in a.pgm --out b.pgm --out c.pgm", "--out given more than once"},
+      {"profile", "add_sat_u8 --size 8x8 --size 16x16", "--size given more than once"},
+      {"pipeline", "seg_avoid --csv a --csv b", "--csv given more than once"},
+      {"scene", "--out a --out b", "--out given more than once"},
+      {"heldout", "--quiet --quiet", "--quiet given more than once"},
+  });
 }
 
 TEST(Commands, OperandsAndRequiredOptionsAreExitTwo) {
-  expect_usage_error("list", "extra", "unexpected argument 'extra'");
-  expect_usage_error("check", "sobel", "unexpected argument 'sobel'");
-  expect_usage_error("profile", "", "profile takes one KERNEL (bfbench list)");
-  expect_usage_error("run", "a b --in x.pgm --out y.pgm", "run takes one KERNEL");
-  expect_usage_error("run", "add_sat_u8 --out y.pgm", "run needs --in FILE");
-  expect_usage_error("debug", "add_sat_u8 --case add_sat_u8:1", "debug needs --seed S");
-  expect_usage_error("pipeline", "", "pipeline takes one NAME");
-  expect_usage_error("scene", "", "--spec is required");
+  expect_usage_errors({
+      {"list", "extra", "unexpected argument 'extra'"},
+      {"check", "sobel", "unexpected argument 'sobel'"},
+      {"profile", "", "profile takes one KERNEL (bfbench list)"},
+      {"run", "a b --in x.pgm --out y.pgm", "run takes one KERNEL"},
+      {"run", "add_sat_u8 --out y.pgm", "run needs --in FILE"},
+      {"debug", "add_sat_u8 --case add_sat_u8:1", "debug needs --seed S"},
+      {"pipeline", "", "pipeline takes one NAME"},
+      {"scene", "", "--spec is required"},
+  });
 }
 
 TEST(Commands, BadInputAndSetUpAreExitTwo) {
-  expect_usage_error("run", "no_such_kernel --in a.pgm --out b.pgm", "unknown kernel");
-  expect_usage_error("pipeline", "no_such --spec path=F1", "unknown pipeline 'no_such'");
-  expect_usage_error("heldout", "no_such", "unknown pipeline 'no_such'");
-  expect_usage_error("scene", "--spec frames=x --out " + test_dir() + "never", "frames");
+  expect_usage_errors({
+      {"run", "no_such_kernel --in a.pgm --out b.pgm", "unknown kernel"},
+      {"pipeline", "no_such --spec path=F1", "unknown pipeline 'no_such'"},
+      {"heldout", "no_such", "unknown pipeline 'no_such'"},
+      {"scene", "--spec frames=x --out " + test_dir() + "never", "frames"},
+  });
   // No simulator where one is named: a set-up that cannot run, exit 2 like bad usage.
   const std::string no_sim = "BFBENCH_SIM=/nonexistent/bfin-elf-run";
   for (const std::string &c : {std::string("check -k add_sat_u8 --seed 1"), std::string("bench -k add_sat_u8 --size 8x8"),
