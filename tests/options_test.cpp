@@ -201,8 +201,11 @@ TEST(Options, RunCommandMapsErrorsToExitTwoAndPassesStatusOn) {
   EXPECT_EQ(run_command("demo", []() -> int { throw UsageError("bad\nthing"); }), 2);
   EXPECT_EQ(run_command("demo", []() -> int { throw InputError("no file"); }), 2);
   EXPECT_EQ(run_command("demo", []() -> int { throw std::runtime_error("oops"); }), 2);
+  EXPECT_EQ(run_command("demo", []() -> int { throw CallFailed("frame 3: wrong"); }), 1);
   const std::string err = testing::internal::GetCapturedStderr();
-  EXPECT_EQ(err, "bfbench demo: bad\\x0athing\nbfbench demo: no file\nbfbench demo: internal error: oops\n");
+  EXPECT_EQ(err,
+            "bfbench demo: bad\\x0athing\nbfbench demo: no file\nbfbench demo: internal error: oops\n"
+            "bfbench demo: frame 3: wrong\n");
 }
 
 TEST(Names, SizesRoundTrip) {

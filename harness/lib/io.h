@@ -18,6 +18,12 @@ namespace bvb {
 struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// A kernel's call failed its check (a wrong result, a fault, a clobbered register) where the
+// command cannot go on without it (a pipeline's frame, the profiled call): exit 1, as a failed
+// check is.
+struct CallFailed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 // Sizes the harness accepts for any frame: large enough for every kernel's memory map.
 constexpr int kMaxFrameDim = 4096;

@@ -315,6 +315,9 @@ int run_command(const std::string &command, const std::function<int()> &body) {
   };
   try {
     return body();
+  } catch (const CallFailed &e) {
+    say(e.what());
+    return int(kExitFailed);
   } catch (const InputError &e) {  // a UsageError too
     return say(e.what());
   } catch (const sim::SetupError &e) {

@@ -104,9 +104,10 @@ class CommandLine {
   size_t operand_min_ = 0, operand_max_ = 0;
 };
 
-// Runs a command and turns what it throws into the exit status: a UsageError, InputError or
-// sim::SetupError is one line "PROGRAM COMMAND: message" on stderr and exit 2, as is anything
-// else (as "internal error: ..."). The one place bfbench's commands report errors.
+// Runs a command and turns what it throws into the exit status, with one line "PROGRAM COMMAND:
+// message" on stderr: a CallFailed is exit 1; a UsageError, InputError or sim::SetupError exit
+// 2, as is anything else (as "internal error: ..."). The one place bfbench's commands report
+// errors.
 int run_command(const std::string &command, const std::function<int()> &body);
 
 }  // namespace bvb

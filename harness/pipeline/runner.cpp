@@ -122,7 +122,7 @@ PipelineRun run_pipeline(const PipelineDef &def, const Target *target, const Sce
       const Call call = target_call(cc, k.index, impl);
       CallResult r = session->call(call);
       std::string err = describe_failure(call, r, target->elf());
-      if (!err.empty()) throw sim::SetupError(def.name + " frame " + std::to_string(f) + ": " + err);
+      if (!err.empty()) throw CallFailed(def.name + " frame " + std::to_string(f) + ": " + err);
       rec.out = def.decode(r.data);
       rec.cycles = r.cycles;
       if (opts.compare_host) {
