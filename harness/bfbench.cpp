@@ -323,7 +323,7 @@ int cmd_run(int argc, char **argv) {
   }
   std::string err = describe_failure(call, r, target.elf());
   if (!err.empty()) {
-    std::fprintf(stderr, "%s run: %s (%s): %s\n", bfbench_name().c_str(), req.kernel.c_str(), impl.c_str(),
+    std::fprintf(stderr, "%s run: %s: %s\n", bfbench_name().c_str(), kernel_impl_name(req.kernel, impl).c_str(),
                  err.c_str());
     return kExitFailed;
   }

@@ -65,6 +65,10 @@ bool parse_case_id(const std::string &text, std::string *kernel, uint64_t *n) {
 
 std::string case_kernel(const std::string &id) { return id.substr(0, id.rfind(':')); }
 
+std::string kernel_impl_name(const std::string &kernel, const std::string &impl) {
+  return kernel + " (" + impl + ")";
+}
+
 std::string budget_key(const std::string &kernel, const std::string &impl, const std::string &case_name) {
   return kernel + "/" + impl + "/" + case_name;
 }

@@ -29,6 +29,9 @@ bool parse_case_id(const std::string &text, std::string *kernel, uint64_t *n = n
 // The kernel of a KERNEL:N (the text before the last colon; all of it when there is none).
 std::string case_kernel(const std::string &id);
 
+// A kernel's implementation as reports name it: "KERNEL (IMPL)", e.g. "sobel3x3_u8 (asm)".
+std::string kernel_impl_name(const std::string &kernel, const std::string &impl);
+
 // A budget's key: "KERNEL/IMPL/CASE".
 std::string budget_key(const std::string &kernel, const std::string &impl, const std::string &case_name);
 // The kernel of a budget key (the text before the first slash).
