@@ -3,6 +3,7 @@
 // help it makes from the declarations.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -166,9 +167,34 @@ TEST(Options, HelpIsMadeFromTheDeclarations) {
   EXPECT_NE(h.find("a parameter (repeatable)"), std::string::npos) << h;
   EXPECT_NE(h.find("\n  -h, --help"), std::string::npos) << h;
   EXPECT_NE(h.find(kExitStatusHelp), std::string::npos) << h;
+  // The usage lines wrap between options, never inside one: each line's brackets close on it.
+  const std::string usage = h.substr(0, h.find("\n\n"));
+  EXPECT_NE(usage.find('\n'), std::string::npos) << "the usage fits one line: nothing tests the wrapping";
+  for (size_t a = 0, b; a < usage.size(); a = b + 1) {
+    b = std::min(usage.find('\n', a), usage.size());
+    const std::string line = usage.substr(a, b - a);
+    EXPECT_EQ(std::count(line.begin(), line.end(), '['), std::count(line.begin(), line.end(), ']')) << line;
+  }
   for (size_t a = 0, b; a < h.size(); a = b + 1) {
     b = h.find('\n', a);
     EXPECT_LE(b - a, 96u) << "a help line over 96 columns: " << h.substr(a, b - a);
+  }
+}
+
+TEST(Options, UsageWrapsBetweenOptions) {
+  // Forty options of two words each, over many lines: a wrap between words would split some.
+  CommandLine many("many");
+  std::vector<std::string> values(40);
+  for (size_t i = 0; i < values.size(); ++i)
+    many.text("--option" + std::to_string(i * 7), "VALUE", &values[i], "one of many");
+  const std::string h = many.help();
+  const std::string usage = h.substr(0, h.find("\n\n"));
+  EXPECT_GT(std::count(usage.begin(), usage.end(), '\n'), 5) << usage;
+  for (size_t a = 0, b; a < usage.size(); a = b + 1) {
+    b = std::min(usage.find('\n', a), usage.size());
+    const std::string line = usage.substr(a, b - a);
+    EXPECT_LE(line.size(), 96u) << line;
+    EXPECT_EQ(std::count(line.begin(), line.end(), '['), std::count(line.begin(), line.end(), ']')) << line;
   }
 }
 

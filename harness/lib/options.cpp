@@ -283,8 +283,15 @@ std::string CommandLine::usage_lines() const {
     std::string m = operand_metavar_ + (operand_max_ > 1 ? "..." : "");
     words += operand_min_ ? m : "[" + m + "]";
   }
-  for (const auto &o : options_) words += " " + o->in_usage();
-  return lead + wrap(words, lead.size(), lead.size()) + "\n";
+  // An option and its value stay on one line: their space is held as \x01 while wrapping.
+  for (const auto &o : options_) {
+    std::string item = o->in_usage();
+    std::replace(item.begin(), item.end(), ' ', '\x01');
+    words += " " + item;
+  }
+  std::string lines = wrap(words, lead.size(), lead.size());
+  std::replace(lines.begin(), lines.end(), '\x01', ' ');
+  return lead + lines + "\n";
 }
 
 std::string CommandLine::help() const {
