@@ -65,6 +65,10 @@ TEST(Options, EveryKindOfValueIsParsed) {
   EXPECT_EQ(d.sizes[1].h, 4);
   EXPECT_EQ(d.operands, (std::vector<std::string>{"a", "b"}));
   EXPECT_TRUE(d.cl.given("--count"));
+  Demo e;
+  ASSERT_TRUE(e.parse({"-n=4", "--param=k=v=w"}));
+  EXPECT_EQ(e.count, 4);
+  EXPECT_EQ(e.params, (std::vector<std::string>{"k=v=w"}));
   EXPECT_TRUE(d.cl.given("-n"));
 }
 

@@ -234,7 +234,7 @@ bool CommandLine::parse(const std::vector<std::string> &args) {
       operands.push_back(a);
       continue;
     }
-    const size_t eq = a.rfind("--", 0) == 0 ? a.find('=') : std::string::npos;
+    const size_t eq = a.find('=');  // --name=value, and -k=value as bfbench always took it
     const std::string name = a.substr(0, eq);
     Option *o = find(name);
     if (!o) throw UsageError("unknown option " + name + more);
