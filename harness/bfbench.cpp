@@ -17,8 +17,11 @@
 #include "check.h"
 #include "cleanup.h"
 #include "debug.h"
+#include "extra_commands.h"
 #include "family.h"
 #include "io.h"
+#include "names.h"
+#include "options.h"
 #include "patterns.h"
 #include "profile.h"
 #include "simdriver.h"
@@ -33,196 +36,88 @@ namespace {
 
 using namespace bvb;
 
-struct Usage : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-const char *kMainHelp =
-    "usage: bfbench COMMAND [options]\n"
-    "\n"
-    "Checks, benchmarks and runs Blackfin vision kernels inside the GNU Blackfin simulator.\n"
-    "\n"
-    "commands:\n"
-    "  list                     kernels and their implementations\n"
-    "  check                    C reference (host and Blackfin) vs assembly, bit for bit\n"
-    "  bench                    modelled BF537 cycles per call and per pixel, C vs assembly\n"
-    "  run KERNEL               one kernel on given frames\n"
-    "  budgets                  compare the bench with the budgets (ci/budgets.json)\n"
-    "  profile KERNEL           where one call's modelled cycles go, per source line and loop\n"
-    "  debug KERNEL             one check call in bfin-elf-gdb, stopped at the kernel's entry\n";
-const char *kMainHelpTail =
-    "\n"
-    "'bfbench COMMAND --help' describes each. Exit status: 0 success, 1 a check or budget\n"
-    "failed, 2 bad usage or bad input.\n";
-
-void print_help(FILE *out) {
-  std::fputs(kMainHelp, out);
-  bvb::print_extra_commands(out);
-  std::fputs(kMainHelpTail, out);
-}
-
-// Minimal option scanner: --name value, --name=value, and flags.
-class Args {
- public:
-  Args(int argc, char **argv, int first) {
-    for (int i = first; i < argc; ++i) a_.push_back(argv[i]);
-  }
-  bool flag(const std::string &name) {
-    for (size_t i = 0; i < a_.size(); ++i)
-      if (a_[i] == name) {
-        a_.erase(a_.begin() + long(i));
-        return true;
-      }
-    return false;
-  }
-  std::vector<std::string> values(const std::string &name, const std::string &alias = "") {
-    std::vector<std::string> out;
-    for (size_t i = 0; i < a_.size();) {
-      const std::string &s = a_[i];
-      if (s == name || (!alias.empty() && s == alias)) {
-        if (i + 1 >= a_.size()) throw Usage(s + " needs a value");
-        out.push_back(a_[i + 1]);
-        a_.erase(a_.begin() + long(i), a_.begin() + long(i) + 2);
-      } else if (s.rfind(name + "=", 0) == 0) {
-        out.push_back(s.substr(name.size() + 1));
-        a_.erase(a_.begin() + long(i));
-      } else {
-        ++i;
-      }
-    }
-    return out;
-  }
-  std::string value(const std::string &name, const std::string &fallback, const std::string &alias = "") {
-    auto v = values(name, alias);
-    if (v.size() > 1) throw Usage(name + " given more than once");
-    return v.empty() ? fallback : v[0];
-  }
-  // The values of an option, without taking them.
-  std::vector<std::string> values_peek(const std::string &name) const {
-    std::vector<std::string> out;
-    for (size_t i = 0; i < a_.size(); ++i) {
-      if (a_[i] == name && i + 1 < a_.size()) out.push_back(a_[i + 1]);
-      else if (a_[i].rfind(name + "=", 0) == 0) out.push_back(a_[i].substr(name.size() + 1));
-    }
-    return out;
-  }
-  std::vector<std::string> positional() {
-    std::vector<std::string> out;
-    for (auto &s : a_) {
-      if (s.size() > 1 && s[0] == '-') throw Usage("unknown option " + s);
-      out.push_back(s);
-    }
-    a_.clear();
-    return out;
-  }
-
- private:
-  std::vector<std::string> a_;
-};
-
-long to_long(const std::string &s, const std::string &what, long lo, long hi) {
-  char *end = nullptr;
-  errno = 0;
-  long v = std::strtol(s.c_str(), &end, 10);
-  if (s.empty() || *end || errno || v < lo || v > hi)
-    throw Usage(what + " wants an integer in " + std::to_string(lo) + ".." + std::to_string(hi) +
-                ", got '" + s + "'");
-  return v;
-}
-
-Size parse_size(const std::string &s) {
-  int w = 0, h = 0;
-  char x = 0, extra = 0;
-  if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 ||
-      w > kMaxFrameDim || h > kMaxFrameDim)
-    throw Usage("--size wants WxH (1.." + std::to_string(kMaxFrameDim) + "), got '" + s + "'");
-  return {w, h};
-}
-
 int default_jobs() {
   unsigned n = std::thread::hardware_concurrency();
   return n ? int(n) : 2;
 }
 
-bool help_requested(Args &args, const char *text) {
-  if (args.flag("--help") || args.flag("-h")) {
-    std::fputs(text, stdout);
-    return true;
-  }
-  return false;
+// The options every command that runs the Blackfin takes: which firmware and which timing model.
+struct TargetArgs {
+  std::string firmware, timing;
+};
+
+void declare_target(CommandLine &cl, TargetArgs *t, bool timing = true) {
+  if (timing)
+    cl.choice("--timing", {"none", "bf537"}, &t->timing,
+              "the simulator's timing model (default $BFBENCH_TIMING, else bf537)");
+  cl.text("--firmware", "ELF", &t->firmware, "the firmware image (default this build's)");
 }
 
-Target make_target(Args &args, bool selftest = false) {
+Target make_target(const TargetArgs &args, bool selftest = false) {
   FirmwareImage fw = selftest ? selftest_firmware() : product_firmware();
-  std::string elf = args.value("--firmware", "");
-  if (!elf.empty()) fw.elf = elf;
+  if (!args.firmware.empty()) fw.elf = args.firmware;
   Target t(fw, default_simulator());
-  std::string timing = args.value("--timing", "");
-  if (!timing.empty()) {
-    if (!valid_timing(timing)) throw Usage("--timing wants none or bf537, got '" + timing + "'");
-    t.set_timing(timing);
-  }
+  if (!args.timing.empty()) t.set_timing(args.timing);
   return t;
 }
 
+void declare_jobs(CommandLine &cl, int *jobs) {
+  *jobs = default_jobs();
+  cl.integer("-j", "N", 1, 256, jobs, "simulator processes at once (default: cores)");
+}
+
+const char *const kKernelGlobHelp = "kernels (shell glob, default *; bfbench list names them)";
+
 // ---------------------------------------------------------------------------------------------
 
-int cmd_list(Args &args) {
-  if (help_requested(args, "usage: bfbench list\n\nLists every kernel: its family and implementations.\n"))
-    return 0;
-  args.positional();
+int cmd_list(int argc, char **argv) {
+  CommandLine cl("list");
+  cl.about("Lists every kernel: its family and implementations.");
+  if (!cl.parse(argc, argv)) return kExitOk;
   for (const auto &k : Registry::product().kernels()) {
     const Family *f = family_of(k.name);
     std::printf("%-24s %-14s c%s\n", k.name.c_str(), f ? f->name.c_str() : "-", k.has_asm ? " asm" : "");
   }
-  return 0;
+  return kExitOk;
 }
 
-int cmd_check(Args &args) {
-  if (help_requested(args,
-                     "usage: bfbench check [-k GLOB] [--seed N] [--seeds COUNT] [-j N] [--campaign]\n"
-                     "                     [--case KERNEL:N] [--timing none|bf537] [--firmware ELF] [-v]\n\n"
-                     "Runs every kernel's C reference on the Blackfin and its assembly in the simulator\n"
-                     "on seeded random, crafted and real frames over many sizes, and compares both with\n"
-                     "the host-compiled C reference, bit for bit; guard bands, callee-saved registers,\n"
-                     "faults and hangs are checked too. The seed is printed; --seed replays it.\n"
-                     "  -k GLOB       kernels to check (shell glob, default *)\n"
-                     "  --seed N      first seed (default: from the clock)\n"
-                     "  --seeds COUNT seeds N, N+1, ... (default 1)\n"
-                     "  -j N          simulator processes at once (default: cores)\n"
-                     "  --campaign    larger sizes (up to 640x480) and more random cases\n"
-                     "  --case ID     only the call ID (KERNEL:N, as a failure prints it), with its seed\n"
-                     "Fails (exit 1) when a selected kernel gets no judged call for one of its\n"
-                     "implementations. Real-frame cases need $BFBENCH_FRAMES_REAL (default\n"
-                     "../shared/frames-real): without it they are skipped, with a message, or with\n"
-                     "BVB_REQUIRE_FRAMES=1 the check stops with an error.\n"))
-    return 0;
+int cmd_check(int argc, char **argv) {
   CheckOptions opts;
-  opts.kernel_glob = args.value("-k", "*", "--kernel");
-  std::string seed = args.value("--seed", "");
-  opts.seed = seed.empty() ? uint32_t(std::time(nullptr)) % 1000000 : uint32_t(to_long(seed, "--seed", 0, 4294967295L));
-  long seeds = to_long(args.value("--seeds", "1"), "--seeds", 1, 100000);
-  opts.jobs = int(to_long(args.value("-j", std::to_string(default_jobs())), "-j", 1, 256));
-  opts.campaign = args.flag("--campaign");
-  opts.verbose = args.flag("-v");
+  long seeds = 1;
+  TargetArgs ta;
+  CommandLine cl("check");
+  cl.about("Runs every kernel's C reference on the Blackfin and its assembly in the simulator\n"
+           "on seeded random, crafted and real frames over many sizes, and compares both with\n"
+           "the host-compiled C reference, bit for bit; guard bands, callee-saved registers,\n"
+           "faults and hangs are checked too. The seed is printed; --seed replays it.")
+      .text("-k,--kernel", "GLOB", &opts.kernel_glob, kKernelGlobHelp)
+      .integer("--seed", "N", 0, 4294967295LL, &opts.seed, "first seed (default: from the clock)")
+      .integer("--seeds", "COUNT", 1, 100000, &seeds, "seeds N, N+1, ... (default 1)");
+  declare_jobs(cl, &opts.jobs);
+  cl.flag("--campaign", &opts.campaign, "larger sizes (up to 640x480) and more random cases")
+      .text("--case", "KERNEL:N", &opts.only_case, "only that call (as a failure prints it), with its --seed")
+      .flag("-v", &opts.verbose, "every failure, not the first three");
+  declare_target(cl, &ta);
+  cl.tail("Fails (exit 1) when a selected kernel gets no judged call for one of its\n"
+          "implementations. Real-frame cases need $BFBENCH_FRAMES_REAL (default\n"
+          "../shared/frames-real): without it they are skipped, with a message, or with\n"
+          "BVB_REQUIRE_FRAMES=1 the check stops with an error.");
+  if (!cl.parse(argc, argv)) return kExitOk;
+  if (!cl.given("--seed")) opts.seed = uint32_t(std::time(nullptr)) % 1000000;
   opts.progress = isatty(2);
   opts.frames_real = default_frames_real();
-  opts.only_case = args.value("--case", "");
-  Target target = make_target(args);
-  args.positional();
+  Target target = make_target(ta);
 
   if (!opts.only_case.empty()) {
     // KERNEL:N names one call; the kernel selects its family, as -k would.
-    const size_t colon = opts.only_case.rfind(':');
-    const std::string kernel = colon == std::string::npos ? "" : opts.only_case.substr(0, colon);
-    const std::string n = colon == std::string::npos ? "" : opts.only_case.substr(colon + 1);
-    if (kernel.empty() || n.empty() || n.find_first_not_of("0123456789") != std::string::npos)
-      throw Usage("--case wants KERNEL:N as a failure prints it, got '" + opts.only_case + "'");
+    std::string kernel;
+    if (!parse_case_id(opts.only_case, &kernel))
+      throw UsageError("--case wants KERNEL:N as a failure prints it, got '" + opts.only_case + "'");
     target.registry().get(kernel);
     if (opts.kernel_glob != "*" && !glob_match(opts.kernel_glob, kernel))
-      throw Usage("--case " + opts.only_case + " is not of a kernel -k '" + opts.kernel_glob + "' selects");
+      throw UsageError("--case " + opts.only_case + " is not of a kernel -k '" + opts.kernel_glob + "' selects");
     opts.kernel_glob = kernel;
-    if (seed.empty()) throw Usage("--case needs the --seed the failure printed");
+    if (!cl.given("--seed")) throw UsageError("--case needs the --seed the failure printed");
   }
   bool any = false;
   for (const auto &k : target.registry().kernels()) any |= glob_match(opts.kernel_glob, k.name);
@@ -284,8 +179,7 @@ void check_bench_sizes(const std::string &glob, const std::vector<Size> &sizes) 
     if (!glob_match(glob, k.name)) continue;
     for (Size s : sizes) {
       std::string why = bench_size_problem(k.name, s.w, s.h);
-      if (!why.empty()) throw Usage("--size " + std::to_string(s.w) + "x" + std::to_string(s.h) + ": " + why +
-                                    " (-k selects kernels)");
+      if (!why.empty()) throw UsageError("--size " + size_name(s) + ": " + why + " (-k selects kernels)");
     }
   }
 }
@@ -297,56 +191,44 @@ void check_budget_glob(const std::string &glob) {
   throw InputError("no assembly kernel matches '" + glob + "' (bfbench list)");
 }
 
-std::vector<Size> parse_sizes(Args &args) {
-  std::vector<Size> sizes;
-  for (const auto &s : args.values("--size")) sizes.push_back(parse_size(s));
-  return sizes;
-}
-
-int cmd_bench(Args &args) {
-  if (help_requested(args,
-                     "usage: bfbench bench [-k GLOB] [--size WxH]... [--json FILE] [--csv FILE]\n"
-                     "                     [--markdown FILE] [--asm-only] [--timing none|bf537] [--no-sim]\n"
-                     "                     [-j N] [--firmware ELF]\n\n"
-                     "Cycles per call and per pixel for each kernel's C reference built for the\n"
-                     "Blackfin and for its assembly, the empty-call overhead measured and subtracted,\n"
-                     "the speed-up, and the kernel's stated lower bound. Cycles are modelled BF537\n"
-                     "cycles (bfin-elf-run --timing bf537: pipeline stalls, L1 banks, SDRAM, caches);\n"
-                     "each call also runs under --timing none and the simulator's own count is shown\n"
-                     "beside the model's (--no-sim skips that run), with where the buffers were\n"
-                     "placed. Sizes default to 160x120, 320x240 and 640x480. Every measured call is\n"
-                     "also checked. $BFBENCH_TIMING sets the default model.\n"))
-    return 0;
+int cmd_bench(int argc, char **argv) {
   BenchOptions opts;
-  opts.kernel_glob = args.value("-k", "*", "--kernel");
-  auto sizes = parse_sizes(args);
+  std::vector<Size> sizes;
+  std::string json_path, csv_path, md_path;
+  bool asm_only = false, no_sim = false;
+  TargetArgs ta;
+  CommandLine cl("bench");
+  cl.about("Cycles per call and per pixel for each kernel's C reference built for the\n"
+           "Blackfin and for its assembly, the empty-call overhead measured and subtracted,\n"
+           "the speed-up, and the kernel's stated lower bound. Cycles are modelled BF537\n"
+           "cycles (bfin-elf-run --timing bf537: pipeline stalls, L1 banks, SDRAM, caches);\n"
+           "each call also runs under --timing none and the simulator's own count is shown\n"
+           "beside the model's (--no-sim skips that run), with where the buffers were\n"
+           "placed. Every measured call is also checked. $BFBENCH_TIMING sets the default model.")
+      .text("-k,--kernel", "GLOB", &opts.kernel_glob, kKernelGlobHelp)
+      .sizes("--size", &sizes, "a frame size (default 160x120, 320x240 and 640x480)")
+      .text("--json", "FILE", &json_path, "also write the rows as JSON")
+      .text("--csv", "FILE", &csv_path, "also write the rows as CSV")
+      .text("--markdown", "FILE", &md_path, "also write the README's cycle table")
+      .flag("--asm-only", &asm_only, "measure the assembly only, not the C reference")
+      .flag("--no-sim", &no_sim, "skip the run under --timing none");
+  declare_jobs(cl, &opts.jobs);
+  declare_target(cl, &ta);
+  if (!cl.parse(argc, argv)) return kExitOk;
   check_bench_sizes(opts.kernel_glob, sizes);
   if (!sizes.empty()) opts.sizes = sizes;
-  std::string json_path = args.value("--json", ""), csv_path = args.value("--csv", ""),
-              md_path = args.value("--markdown", "");
-  opts.run_c = !args.flag("--asm-only");
-  opts.compare_sim = !args.flag("--no-sim");
-  opts.jobs = int(to_long(args.value("-j", std::to_string(default_jobs())), "-j", 1, 256));
+  opts.run_c = !asm_only;
+  opts.compare_sim = !no_sim;
   opts.progress = isatty(2);
-  Target target = make_target(args);
-  args.positional();
+  Target target = make_target(ta);
   auto rows = run_bench(target, opts);
   if (rows.empty()) throw InputError("no kernel matches '" + opts.kernel_glob + "' (bfbench list)");
   std::fputs(bench_table(rows, target.null_call_cycles()).c_str(), stdout);
-  if (!json_path.empty()) {
-    std::string j = bench_json(rows, target.null_call_cycles());
-    write_file_atomic(json_path, j.data(), j.size());
-  }
-  if (!csv_path.empty()) {
-    std::string c = bench_csv(rows);
-    write_file_atomic(csv_path, c.data(), c.size());
-  }
-  if (!md_path.empty()) {
-    std::string m = bench_markdown(rows);
-    write_file_atomic(md_path, m.data(), m.size());
-  }
+  if (!json_path.empty()) write_file_atomic(json_path, bench_json(rows, target.null_call_cycles()));
+  if (!csv_path.empty()) write_file_atomic(csv_path, bench_csv(rows));
+  if (!md_path.empty()) write_file_atomic(md_path, bench_markdown(rows));
   for (const auto &r : rows)
-    if (!r.error.empty()) return 1;
+    if (!r.error.empty()) return kExitFailed;
   return 0;
 }
 
@@ -363,47 +245,44 @@ int pick_output_buffer(const CheckCall &call, const std::string &name) {
   }
   if (name.empty() && first >= 0) return first;
   if (first < 0) throw InputError(call.kernel + " has no output buffer to write as .npy");
-  throw Usage("--out-buffer " + name + ": no such output buffer (this call has " + outputs + ")");
+  throw UsageError("--out-buffer " + name + ": no such output buffer (this call has " + outputs + ")");
 }
 
-int cmd_run(Args &args) {
-  if (help_requested(args,
-                     "usage: bfbench run KERNEL --in FILE [--in FILE] --out FILE [--impl asm|c|host]\n"
-                     "                  [--param K=V]... [--size WxH] [--grey] [--out-buffer NAME]\n"
-                     "                  [--timing none|bf537] [--firmware ELF]\n\n"
-                     "Runs one kernel on the given frames and writes its output; prints the cycles of the\n"
-                     "call (modelled BF537 cycles, or the simulator's own with --timing none). --impl\n"
-                     "defaults to asm, or c for kernels without assembly.\n"
-                     "Formats follow the file names: frames in and out as .pgm (grey), .ppm (RGB), .pnm,\n"
-                     ".png (8-bit grey or RGB) or .npy (uint8 HxW or HxWx3), raw .uyvy with --size WxH;\n"
-                     "flow out as .flo or .npy (float32 HxWx2); lists out as .csv or .txt. --out F.npy\n"
-                     "writes an output buffer as it is, with its element type and shape (--out-buffer NAME\n"
-                     "picks which; default the first). A name without an extension gets the output's own\n"
-                     "format (PNM, .flo or text), any other extension is an error.\n"
-                     "  --grey           convert colour frames for a kernel of grey frames (BT.601 luma);\n"
-                     "                   without it a colour frame is an error\n"))
-    return 0;
+int cmd_run(int argc, char **argv) {
   RunRequest req;
-  req.inputs = args.values("--in");
-  req.output = args.value("--out", "");
-  req.grey_from_colour = args.flag("--grey");
-  const std::string out_buffer = args.value("--out-buffer", "");
-  std::string impl = args.value("--impl", "");
-  for (const auto &p : args.values("--param")) req.params.set(p);
-  auto sizes = parse_sizes(args);
-  if (sizes.size() > 1) throw Usage("--size given more than once");
-  if (!sizes.empty()) req.raw_width = sizes[0].w, req.raw_height = sizes[0].h;
-  std::string elf = args.value("--firmware", "");
-  std::string timing = args.value("--timing", "");
-  if (!timing.empty() && !valid_timing(timing)) throw Usage("--timing wants none or bf537, got '" + timing + "'");
-  auto pos = args.positional();
-  if (pos.size() != 1) throw Usage("run takes one KERNEL (bfbench list)");
-  req.kernel = pos[0];
-  if (req.inputs.empty()) throw Usage("run needs --in FILE");
-  if (req.output.empty()) throw Usage("run needs --out FILE");
+  std::string out_buffer, impl;
+  std::vector<std::string> params, kernel;
+  Size raw{0, 0};
+  TargetArgs ta;
+  CommandLine cl("run");
+  cl.about("Runs one kernel on the given frames and writes its output; prints the cycles of the\n"
+           "call (modelled BF537 cycles, or the simulator's own with --timing none).\n"
+           "Formats follow the file names: frames in and out as .pgm (grey), .ppm (RGB), .pnm,\n"
+           ".png (8-bit grey or RGB) or .npy (uint8 HxW or HxWx3), raw .uyvy with --size WxH;\n"
+           "flow out as .flo or .npy (float32 HxWx2); lists out as .csv or .txt. --out F.npy\n"
+           "writes an output buffer as it is, with its element type and shape (--out-buffer NAME\n"
+           "picks which; default the first). A name without an extension gets the output's own\n"
+           "format (PNM, .flo or text), any other extension is an error.")
+      .operands("KERNEL", &kernel, 1, 1, "(bfbench list)")
+      .texts("--in", "FILE", &req.inputs, "an input frame, in the order the kernel takes them")
+      .required()
+      .text("--out", "FILE", &req.output, "the output; its extension says its format")
+      .required()
+      .text("--impl", "asm|c|host", &impl, "the implementation (default asm, or c for kernels without assembly)")
+      .texts("--param", "K=V", &params, "a kernel parameter")
+      .size("--size", &raw, "the frame size of raw .uyvy input")
+      .flag("--grey", &req.grey_from_colour,
+            "convert colour frames for a kernel of grey frames (BT.601 luma); without it a colour frame is an error")
+      .text("--out-buffer", "NAME", &out_buffer, "the output buffer an --out F.npy writes (default the first)");
+  declare_target(cl, &ta);
+  if (!cl.parse(argc, argv)) return kExitOk;
+  for (const auto &p : params) req.params.set(p);
+  if (cl.given("--size")) req.raw_width = raw.w, req.raw_height = raw.h;
+  req.kernel = kernel[0];
+  if (req.output.empty()) throw UsageError("run needs --out FILE");
   // The output's name decides its format: an unknown one is refused before anything runs.
   const bool as_npy = format_of(req.output) == FileFormat::Npy;
-  if (!out_buffer.empty() && !as_npy) throw Usage("--out-buffer picks the buffer of an --out F.npy");
+  if (!out_buffer.empty() && !as_npy) throw UsageError("--out-buffer picks the buffer of an --out F.npy");
   for (const auto &in : req.inputs) format_of(in);
   const KernelInfo &k = Registry::product().get(req.kernel);
   if (impl.empty()) impl = k.has_asm ? "asm" : "c";
@@ -432,10 +311,7 @@ int cmd_run(Args &args) {
     std::printf("%s host %s: done\n", req.kernel.c_str(), plan.summary.c_str());
     return 0;
   }
-  FirmwareImage fw = product_firmware();
-  if (!elf.empty()) fw.elf = elf;
-  Target target(fw, default_simulator());
-  if (!timing.empty()) target.set_timing(timing);
+  Target target = make_target(ta);
   const Call call = target_call(plan.call, k.index, parse_impl(impl));
   CallResult r = target.run_one(call);
   // Frames too large for the Blackfin's memory are the input's fault, not the kernel's.
@@ -447,8 +323,9 @@ int cmd_run(Args &args) {
   }
   std::string err = describe_failure(call, r, target.elf());
   if (!err.empty()) {
-    std::fprintf(stderr, "bfbench: %s (%s): %s\n", req.kernel.c_str(), impl.c_str(), err.c_str());
-    return 1;
+    std::fprintf(stderr, "%s run: %s: %s\n", bfbench_name().c_str(), kernel_impl_name(req.kernel, impl).c_str(),
+                 err.c_str());
+    return kExitFailed;
   }
   write_output(r.data);
   std::printf("%s %s %s: %u cycles", req.kernel.c_str(), impl.c_str(), plan.summary.c_str(), r.cycles);
@@ -457,29 +334,31 @@ int cmd_run(Args &args) {
   return 0;
 }
 
-int cmd_budgets(Args &args) {
-  if (help_requested(args,
-                     "usage: bfbench budgets [--update] [--file FILE] [-k GLOB] [-j N] [--timing none|bf537]\n\n"
-                     "Measures every assembly kernel at the sizes its budgets name (and at 160x120,\n"
-                     "320x240, 640x480 for kernels without one) and compares with the budgets file\n"
-                     "(default ci/budgets.json; in the bfbench of a family built outside this tree,\n"
-                     "the family's BUDGETS file). Fails when a kernel exceeds its budget, has none, or\n"
-                     "a budget names nothing measured. --update rewrites the file atomically with the\n"
-                     "measured cycles and prints old -> new for every entry. Budgets are judged under the\n"
-                     "timing model the file names (its \"timing\"; none when absent); --update --timing T\n"
-                     "re-measures the file in model T.\n"))
-    return 0;
-  const bool update = args.flag("--update");
-  const bool timing_given = !args.values_peek("--timing").empty();
-  std::string path = args.value("--file", product().budgets);
+int cmd_budgets(int argc, char **argv) {
+  bool update = false;
+  std::string path = product().budgets;
   BenchOptions opts;
-  opts.kernel_glob = args.value("-k", "*", "--kernel");
-  opts.jobs = int(to_long(args.value("-j", std::to_string(default_jobs())), "-j", 1, 256));
+  TargetArgs ta;
+  CommandLine cl("budgets");
+  cl.about("Measures every assembly kernel at the sizes its budgets name (and at 160x120,\n"
+           "320x240, 640x480 for kernels without one) and compares with the budgets file\n"
+           "(default ci/budgets.json; in the bfbench of a family built outside this tree,\n"
+           "the family's BUDGETS file). Fails when a kernel exceeds its budget, has none, or\n"
+           "a budget names nothing measured. --update rewrites the file atomically with the\n"
+           "measured cycles and prints old -> new for every entry. Budgets are judged under the\n"
+           "timing model the file names (its \"timing\"; none when absent); --update --timing T\n"
+           "re-measures the file in model T.")
+      .flag("--update", &update, "rewrite the file with the measured cycles")
+      .text("--file", "FILE", &path, "the budgets file (default " + product().budgets + ")")
+      .text("-k,--kernel", "GLOB", &opts.kernel_glob, kKernelGlobHelp);
+  declare_jobs(cl, &opts.jobs);
+  declare_target(cl, &ta);
+  if (!cl.parse(argc, argv)) return kExitOk;
+  const bool timing_given = cl.given("--timing");
   opts.run_c = false;
   opts.progress = isatty(2);
   check_budget_glob(opts.kernel_glob);
-  Target target = make_target(args);
-  args.positional();
+  Target target = make_target(ta);
   // Held until the file is rewritten: two updates at once would each write what they loaded,
   // and the later rename would drop the other's entries.
   FileLock lock;
@@ -503,7 +382,7 @@ int cmd_budgets(Args &args) {
   std::vector<Budget> scoped;  // only budgets of kernels under -k are judged or rewritten
   std::vector<Budget> others;
   for (const auto &b : budgets)
-    (glob_match(opts.kernel_glob, b.key.substr(0, b.key.find('/'))) ? scoped : others).push_back(b);
+    (glob_match(opts.kernel_glob, budget_key_kernel(b.key)) ? scoped : others).push_back(b);
   auto verdicts = judge_budgets(rows, scoped);
   if (update) {
     std::vector<Budget> next = others;
@@ -531,7 +410,7 @@ int cmd_budgets(Args &args) {
       std::string old_timing;
       load_budgets(path, &old_timing);
       if (old_timing != file_timing)
-        throw Usage("--update --timing " + file_timing + " with -k would mix models in one file: update all kernels");
+        throw UsageError("--update --timing " + file_timing + " with -k would mix models in one file: update all kernels");
     }
     save_budgets(path, next, file_timing);
     std::printf("wrote %s\n", path.c_str());
@@ -575,95 +454,112 @@ int cmd_budgets(Args &args) {
   return bad ? 1 : 0;
 }
 
-int cmd_profile(Args &args) {
-  if (help_requested(args,
-                     "usage: bfbench profile KERNEL [--size WxH] [--impl asm|c] [--seed N] [--json FILE]\n"
-                     "                      [--html FILE] [--lines N] [--firmware ELF]\n\n"
-                     "Runs the kernel's bench call (default 320x240) once under the timing model with the\n"
-                     "simulator's per-instruction profile and shows where its cycles go: the issue cycles\n"
-                     "and each stall cause (address-register load/move, L1 sub-bank collision, SDRAM\n"
-                     "read/write, MMR, external fetch, caches, multi-cycle instructions), the hot loops\n"
-                     "(cycles per iteration against the body's issue bound) and the hottest source lines.\n"
-                     "The profile's cycles equal the call's measured cycles plus the call overhead, or it\n"
-                     "fails. --json writes every instruction, line and loop; --html a static page of the\n"
-                     "annotated source with a heat colour per line. Exit 1 if the call fails its check.\n"))
-    return 0;
+int cmd_profile(int argc, char **argv) {
   ProfileOptions po;
-  po.impl = args.value("--impl", "asm");
-  auto sizes = parse_sizes(args);
-  if (sizes.size() > 1) throw Usage("--size given more than once");
-  if (!sizes.empty()) po.size = sizes[0];
-  po.seed = uint32_t(to_long(args.value("--seed", "1"), "--seed", 0, 0xffffffffL));
-  const std::string json_path = args.value("--json", ""), html_path = args.value("--html", "");
-  const long top = to_long(args.value("--lines", "25"), "--lines", 0, 100000);
-  if (args.values_peek("--timing").size() && args.values_peek("--timing")[0] != "bf537")
-    throw Usage("profile measures the timing model's cycles: --timing bf537 only");
-  Target target = make_target(args);
+  po.impl = "asm";
+  po.seed = 1;
+  std::string json_path, html_path, timing;
+  long top = 25;
+  std::vector<std::string> kernel;
+  TargetArgs ta;
+  CommandLine cl("profile");
+  cl.about("Runs the kernel's bench call once under the timing model with the\n"
+           "simulator's per-instruction profile and shows where its cycles go: the issue cycles\n"
+           "and each stall cause (address-register load/move, L1 sub-bank collision, SDRAM\n"
+           "read/write, MMR, external fetch, caches, multi-cycle instructions), the hot loops\n"
+           "(cycles per iteration against the body's issue bound) and the hottest source lines.\n"
+           "The profile's cycles equal the call's measured cycles plus the call overhead, or it\n"
+           "fails. --json writes every instruction, line and loop; --html a static page of the\n"
+           "annotated source with a heat colour per line. Exit 1 if the call fails its check.")
+      .operands("KERNEL", &kernel, 1, 1, "(bfbench list)")
+      .size("--size", &po.size, "the bench call's size (default 320x240)")
+      .text("--impl", "asm|c", &po.impl, "the implementation (default asm)")
+      .integer("--seed", "N", 0, 0xffffffffLL, &po.seed, "the bench call's seed (default 1)")
+      .text("--json", "FILE", &json_path, "write every instruction, line and loop as JSON")
+      .text("--html", "FILE", &html_path, "write the annotated source as one static page")
+      .integer("--lines", "N", 0, 100000, &top, "the hottest source lines shown (default 25)")
+      // The profile is the timing model's: the option exists for scripts that pass it on.
+      .choice("--timing", {"bf537"}, &timing, "the timing model (bf537 only: the profile is its cycles)");
+  declare_target(cl, &ta, false);
+  if (!cl.parse(argc, argv)) return kExitOk;
+  Target target = make_target(ta);
   target.set_timing("bf537");
-  auto pos = args.positional();
-  if (pos.size() != 1) throw Usage("profile takes one KERNEL (bfbench list)");
-  po.kernel = pos[0];
-  Profile p;
-  try {
-    p = run_profile(target, po);
-  } catch (const ProfileCheckFailed &e) {
-    std::fprintf(stderr, "bfbench: %s\n", e.what());
-    return 1;
-  }
+  po.kernel = kernel[0];
+  const Profile p = run_profile(target, po);  // ProfileCheckFailed: exit 1 (run_command)
   std::fputs(profile_text(p, size_t(top)).c_str(), stdout);
-  if (!json_path.empty()) {
-    std::string j = profile_json(p);
-    write_file_atomic(json_path, j.data(), j.size());
-  }
-  if (!html_path.empty()) {
-    std::string h = profile_html(p);
-    write_file_atomic(html_path, h.data(), h.size());
-  }
+  if (!json_path.empty()) write_file_atomic(json_path, profile_json(p));
+  if (!html_path.empty()) write_file_atomic(html_path, profile_html(p));
   return 0;
 }
 
-int cmd_debug(Args &args) {
-  if (help_requested(args,
-                     "usage: bfbench debug KERNEL --case KERNEL:N --seed S [--impl asm|c] [--batch]\n"
-                     "                    [--timing none|bf537] [--firmware ELF]\n\n"
-                     "The call that `bfbench check --seed S --case KERNEL:N` runs (a failure prints both),\n"
-                     "with its buffers, in bfin-elf-gdb's built-in simulator (target sim, as bfin-elf-run\n"
-                     "runs it), stopped at the kernel's entry; each buffer's address is printed and set\n"
-                     "as a gdb variable ($a, $dst, ...). --batch prints the registers at the entry and\n"
-                     "quits (for scripts). Needs the gdb: emu/bootstrap.sh --with-gdb (about 25 minutes;\n"
-                     "$BFBENCH_GDB names another). Exit status: gdb's; 2 without a gdb or on bad input.\n"))
-    return 0;
-  const std::string id = args.value("--case", "");
-  const std::string seed = args.value("--seed", "");
-  const std::string impl_s = args.value("--impl", "");
-  const bool batch = args.flag("--batch");
+int cmd_debug(int argc, char **argv) {
+  std::string id, impl_s;
+  uint32_t seed = 0;
+  bool batch = false;
+  std::vector<std::string> kernel;
+  TargetArgs ta;
+  CommandLine cl("debug");
+  cl.about("The call that `bfbench check --seed S --case KERNEL:N` runs (a failure prints both),\n"
+           "with its buffers, in bfin-elf-gdb's built-in simulator (target sim, as bfin-elf-run\n"
+           "runs it), stopped at the kernel's entry; each buffer's address is printed and set\n"
+           "as a gdb variable ($a, $dst, ...). Needs the gdb: emu/bootstrap.sh --with-gdb (about\n"
+           "25 minutes; $BFBENCH_GDB names another).")
+      .operands("KERNEL", &kernel, 1, 1, "(bfbench list)")
+      .text("--case", "KERNEL:N", &id, "the call, as a check failure prints it")
+      .required()
+      .integer("--seed", "S", 0, 4294967295LL, &seed, "the check's seed, as the failure prints it")
+      .required()
+      .text("--impl", "asm|c", &impl_s, "the implementation (default asm, or c for kernels without assembly)")
+      .flag("--batch", &batch, "print the registers at the entry and quit (for scripts)")
+      .exit_status("Exit status: gdb's; 2 without a gdb or on bad usage or input.");
+  declare_target(cl, &ta);
+  if (!cl.parse(argc, argv)) return kExitOk;
   const std::string gdb = default_gdb();
-  // No gdb: one line saying how to get it, before anything else is looked at.
+  // No gdb: one line saying how to get it, before the kernel and the call are looked at.
   if (gdb.empty() || access(gdb.c_str(), X_OK) != 0)
     throw InputError("no bfin-elf-gdb" + (gdb.empty() ? std::string(" in a host-only build") : " at " + gdb) +
                      ": build it with emu/bootstrap.sh --with-gdb (about 25 minutes), or set $BFBENCH_GDB");
-  Target target = make_target(args);
-  auto pos = args.positional();
-  if (pos.size() != 1) throw Usage("debug takes one KERNEL (bfbench list)");
-  const KernelInfo &k = target.registry().get(pos[0]);
-  if (id.empty() || seed.empty()) throw Usage("debug needs --case KERNEL:N and --seed S, as a check failure prints them");
-  const size_t colon = id.rfind(':');
-  if (colon == std::string::npos || id.substr(0, colon) != k.name || colon + 1 == id.size() ||
-      id.find_first_not_of("0123456789", colon + 1) != std::string::npos)
-    throw Usage("--case wants " + k.name + ":N, got '" + id + "'");
+  Target target = make_target(ta);
+  const KernelInfo &k = target.registry().get(kernel[0]);
+  std::string case_kernel_name;
+  if (!parse_case_id(id, &case_kernel_name) || case_kernel_name != k.name)
+    throw UsageError("--case wants " + k.name + ":N, got '" + id + "'");
   const uint32_t impl = impl_s.empty() ? uint32_t(k.has_asm ? BVB_IMPL_ASM : BVB_IMPL_C) : parse_impl(impl_s);
   std::string case_name;
-  const Call call = case_call(target, id, uint32_t(to_long(seed, "--seed", 0, 4294967295L)), impl, &case_name);
+  const Call call = case_call(target, id, seed, impl, &case_name);
   const std::string window = make_temp_file();
   struct Cleanup {
     std::string p;
     ~Cleanup() { remove_temp_file(p); }
   } cleanup{window};
   const DebugPlan plan = plan_debug(target, call, window, gdb, batch);
-  std::printf("%s (%s) %s, seed %s: stopping at %s (0x%08x)\n", id.c_str(), impl_name(impl), case_name.c_str(),
-              seed.c_str(), plan.entry_name.c_str(), plan.entry);
+  std::printf("%s (%s) %s, seed %u: stopping at %s (0x%08x)\n", id.c_str(), impl_name(impl), case_name.c_str(),
+              seed, plan.entry_name.c_str(), plan.entry);
   for (const auto &b : plan.buffers) std::printf("  %s\n", b.c_str());
   return run_gdb(plan.argv);
+}
+
+// The kernel harness's commands; the others (commands.cpp, extra_commands.h) follow them in the
+// help. Each gets argv from its own name on.
+const ExtraCommand kHarnessCommands[] = {
+    {"list", "kernels and their implementations", cmd_list},
+    {"check", "C reference (host and Blackfin) vs assembly, bit for bit", cmd_check},
+    {"bench", "modelled BF537 cycles per call and per pixel, C vs assembly", cmd_bench},
+    {"run", "one kernel on given frames (bfbench run KERNEL)", cmd_run},
+    {"budgets", "compare the bench with the budgets (ci/budgets.json)", cmd_budgets},
+    {"profile", "where one call's modelled cycles go, per source line and loop", cmd_profile},
+    {"debug", "one check call in bfin-elf-gdb, stopped at the kernel's entry", cmd_debug},
+};
+
+void print_help(FILE *out) {
+  std::fprintf(out,
+               "usage: %s COMMAND [options]\n\n"
+               "Checks, benchmarks and runs Blackfin vision kernels inside the GNU Blackfin simulator.\n\n"
+               "commands:\n",
+               bfbench_name().c_str());
+  for (const auto &c : kHarnessCommands) std::fprintf(out, "  %-24s %s\n", c.name, c.summary);
+  bvb::print_extra_commands(out);
+  std::fprintf(out, "\n'%s COMMAND --help' describes each.\n%s\n", bfbench_name().c_str(), kExitStatusHelp);
 }
 
 }  // namespace
@@ -673,37 +569,19 @@ int bvb::bfbench_main(int argc, char **argv) {
   bvb::install_interrupt_cleanup();
   if (argc < 2) {
     print_help(stderr);
-    return 2;
+    return kExitUsage;
   }
   const std::string cmd = argv[1];
-  try {
-    if (cmd == "--help" || cmd == "-h" || cmd == "help") {
-      print_help(stdout);
-      return 0;
-    }
-    Args args(argc, argv, 2);
-    if (cmd == "list") return cmd_list(args);
-    if (cmd == "check") return cmd_check(args);
-    if (cmd == "bench") return cmd_bench(args);
-    if (cmd == "run") return cmd_run(args);
-    if (cmd == "budgets") return cmd_budgets(args);
-    if (cmd == "profile") return cmd_profile(args);
-    if (cmd == "debug") return cmd_debug(args);
-    bool handled = false;
-    int rc = bvb::extra_command(cmd, argc - 1, argv + 1, &handled);
-    if (handled) return rc;
-    throw Usage("unknown command '" + cmd + "' (bfbench --help)");
-  } catch (const Usage &e) {
-    std::fprintf(stderr, "bfbench: %s\n", sim::printable(e.what(), 2000).c_str());
-    return 2;
-  } catch (const InputError &e) {
-    std::fprintf(stderr, "bfbench: %s\n", sim::printable(e.what(), 2000).c_str());
-    return 2;
-  } catch (const sim::SetupError &e) {
-    std::fprintf(stderr, "bfbench: %s\n", sim::printable(e.what(), 2000).c_str());
-    return 2;
-  } catch (const std::exception &e) {
-    std::fprintf(stderr, "bfbench: internal error: %s\n", sim::printable(e.what(), 2000).c_str());
-    return 2;
+  if (cmd == "--help" || cmd == "-h" || cmd == "help") {
+    print_help(stdout);
+    return kExitOk;
   }
+  for (const auto &c : kHarnessCommands)
+    if (cmd == c.name) return run_command(cmd, [&] { return c.fn(argc - 1, argv + 1); });
+  bool handled = false;
+  const int rc = run_command(cmd, [&] { return bvb::extra_command(cmd, argc - 1, argv + 1, &handled); });
+  if (handled) return rc;
+  return run_command("", [&]() -> int {
+    throw UsageError("unknown command '" + cmd + "' (" + bfbench_name() + " --help)");
+  });
 }

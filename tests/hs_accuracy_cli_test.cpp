@@ -31,7 +31,7 @@ int run(std::vector<std::string> args, std::string *out = nullptr) {
 TEST(HsAccuracyCli, HelpAndUsageErrors) {
   std::string out;
   EXPECT_EQ(run({"--help"}, &out), 0);
-  EXPECT_NE(out.find("usage: hs-accuracy"), std::string::npos);
+  EXPECT_NE(out.find("usage: bfbench hs-accuracy"), std::string::npos);
   EXPECT_EQ(run({"--alpha", "7.9"}), 2);
   EXPECT_EQ(run({"--alpha", "257"}), 2);
   EXPECT_EQ(run({"--alpha", "eight"}), 2);

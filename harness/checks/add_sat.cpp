@@ -4,6 +4,7 @@
 #include "family.h"
 #include "io.h"
 #include "patterns.h"
+#include "names.h"
 
 namespace bvb {
 namespace {
@@ -32,7 +33,7 @@ void check(Checker &ck) {
     for (Pattern pa : ck.patterns()) {
       const Pattern pb = ck.patterns()[rng.uniform(0, int(ck.patterns().size()) - 1)];
       const int ss = pick_stride(s.w, rng), ds = pick_stride(s.w, rng);
-      std::string name = std::to_string(s.w) + "x" + std::to_string(s.h) + " strides " +
+      std::string name = size_name(s.w, s.h) + " strides " +
                          std::to_string(ss) + "/" + std::to_string(ds) + " " + pattern_name(pa) + "+" +
                          pattern_name(pb);
       CheckCall c = add_sat_call(s.w, s.h, ss, ds, make_plane(pa, s.w, s.h, ss, rng, ck.options().frames_real),
@@ -49,7 +50,7 @@ void check(Checker &ck) {
 
 CheckCall bench_call(const std::string &, int w, int h, Rng &rng) {
   CheckCall c = add_sat_call(w, h, w, w, make_plane(Pattern::Noise, w, h, w, rng, ""),
-                             make_plane(Pattern::Noise, w, h, w, rng, ""), std::to_string(w) + "x" + std::to_string(h));
+                             make_plane(Pattern::Noise, w, h, w, rng, ""), size_name(w, h));
   c.bufs[3].place = BVB_PLACE_L1B;  // frames in SDRAM, the band buffers in L1
   return c;
 }
@@ -73,7 +74,7 @@ RunPlan plan_run(RunRequest &req) {
     out.data = bufs[2];
     write_image(path, out);
   };
-  p.summary = std::to_string(w) + "x" + std::to_string(h);
+  p.summary = size_name(w, h);
   return p;
 }
 

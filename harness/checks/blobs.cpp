@@ -13,6 +13,7 @@
 #include "patterns.h"
 #include "robot_view.h"
 #include "formats.h"
+#include "names.h"
 
 namespace bvb {
 namespace {
@@ -212,7 +213,7 @@ void check(Checker &ck) {
       const int full = s.w * s.h;
       const int r = rng.uniform(0, 4);
       const int cap = r == 0 ? rng.uniform(0, 16) : r == 1 ? full / 64 + 1 : std::min(full, 32768);
-      std::string name = std::to_string(s.w) + "x" + std::to_string(s.h) + " stride " + std::to_string(stride) +
+      std::string name = size_name(s.w, s.h) + " stride " + std::to_string(stride) +
                          " " + src + " classes " + std::to_string(prm.nclasses) + " conn " +
                          std::to_string(prm.connectivity) + " max " + std::to_string(prm.max_blobs) + " min " +
                          std::to_string(prm.min_count) + " labels " + std::to_string(cap);
@@ -227,7 +228,7 @@ void check(Checker &ck) {
       prm.connectivity = pose & 1 ? 4 : 8;
       const auto &uyvy = robot_view(s.w, s.h, pose).uyvy;
       ck.add(blobs_call(uyvy, s.w, s.h, 2 * s.w, prm, 4096,
-                        std::to_string(s.w) + "x" + std::to_string(s.h) + " robot view " + std::to_string(pose) +
+                        size_name(s.w, s.h) + " robot view " + std::to_string(pose) +
                             " conn " + std::to_string(prm.connectivity)));
     }
   }
@@ -236,7 +237,7 @@ void check(Checker &ck) {
 CheckCall bench_call(const std::string &, int w, int h, Rng &) {
   if (w & 1) return {};
   return blobs_call(robot_view(w, h, 0).uyvy, w, h, 2 * w, robot_params(), 8192,
-                    std::to_string(w) + "x" + std::to_string(h));
+                    size_name(w, h));
 }
 
 // --param classN=YMIN:YMAX:UMIN:UMAX:VMIN:VMAX for N = 0, 1, ... (contiguous); without any,
@@ -343,7 +344,7 @@ RunPlan plan_run(RunRequest &req) {
     std::printf("blobs: %d found, %d labels used, %d pixels dropped\n", found, sum.labels_used, sum.dropped);
   };
   p.kind = OutputKind::ImageOrText;
-  p.summary = std::to_string(w) + "x" + std::to_string(h) + " " + std::to_string(prm.nclasses) + " classes";
+  p.summary = size_name(w, h) + " " + std::to_string(prm.nclasses) + " classes";
   return p;
 }
 

@@ -10,6 +10,7 @@
 #include "io.h"
 #include "patterns.h"
 #include "robot_view.h"
+#include "names.h"
 
 namespace bvb {
 namespace {
@@ -141,7 +142,7 @@ void check(Checker &ck) {
       const int cap = r == 0 && s.w * s.h <= 4096 ? rng.uniform(0, 8)
                       : r <= 1                    ? rng.uniform(1, std::max(full / 16, 1))
                                                   : full;
-      std::string name = std::to_string(s.w) + "x" + std::to_string(s.h) + " strides " + std::to_string(gs) +
+      std::string name = size_name(s.w, s.h) + " strides " + std::to_string(gs) +
                          "/" + std::to_string(es) + " " + src + " low " + std::to_string(low) + " high " +
                          std::to_string(high) + " stack " + std::to_string(cap);
       CheckCall c = canny_call(g, s.w, s.h, es, low, high, cap, name);
@@ -156,7 +157,7 @@ void check(Checker &ck) {
       Gradients g = sobel(grey.data.data(), s.w, s.h, s.w, s.w, rng);
       const int cap = pose == 3 ? 4 : BVB_CANNY_STACK_ENTRIES(s.w, s.h);
       CheckCall c = canny_call(g, s.w, s.h, s.w, 60, 160, cap,
-                               std::to_string(s.w) + "x" + std::to_string(s.h) + " robot view " +
+                               size_name(s.w, s.h) + " robot view " +
                                    std::to_string(pose) + " stack " + std::to_string(cap));
       ck.add(std::move(c));
     }
@@ -171,7 +172,7 @@ CheckCall bench_call(const std::string &, int w, int h, Rng &rng) {
   const Image &grey = robot_view(w, h, 0).grey;
   Gradients g = sobel(grey.data.data(), w, h, w, w, rng);
   return canny_call(g, w, h, w, kLow, kHigh, BVB_CANNY_STACK_ENTRIES(w, h),
-                    std::to_string(w) + "x" + std::to_string(h));
+                    size_name(w, h));
 }
 
 RunPlan plan_run(RunRequest &req) {
@@ -192,7 +193,7 @@ RunPlan plan_run(RunRequest &req) {
     out.data = bufs[2];
     write_image(path, out);
   };
-  p.summary = std::to_string(w) + "x" + std::to_string(h) + " low " + std::to_string(low) + " high " +
+  p.summary = size_name(w, h) + " low " + std::to_string(low) + " high " +
               std::to_string(high) + " stack " + std::to_string(cap);
   return p;
 }

@@ -6,6 +6,7 @@
 #include "family.h"
 #include "io.h"
 #include "patterns.h"
+#include "names.h"
 
 namespace bvb {
 namespace {
@@ -24,7 +25,7 @@ CheckCall copy_call(int w, int h, int ss, int ds, int band, std::vector<uint8_t>
 }
 
 std::string case_name(int w, int h, int ss, int ds, int band, uint32_t ks, uint32_t kd, const char *where) {
-  return std::to_string(w) + "x" + std::to_string(h) + " strides " + std::to_string(ss) + "/" +
+  return size_name(w, h) + " strides " + std::to_string(ss) + "/" +
          std::to_string(ds) + " band " + std::to_string(band) + " skews " + std::to_string(ks) + "/" +
          std::to_string(kd) + " " + where;
 }
@@ -75,7 +76,7 @@ void check(Checker &ck) {
 CheckCall bench_call(const std::string &, int w, int h, Rng &rng) {
   const int band = BVB_SOBEL3X3_BAND_ROWS(w);
   CheckCall c = copy_call(w, h, w, w, band, make_plane(Pattern::Noise, w, h, w, rng, ""),
-                          std::to_string(w) + "x" + std::to_string(h));
+                          size_name(w, h));
   c.bufs[2].place = BVB_PLACE_L1A;
   return c;
 }
@@ -97,7 +98,7 @@ RunPlan plan_run(RunRequest &req) {
     out.data = bufs[1];
     write_image(path, out);
   };
-  p.summary = std::to_string(w) + "x" + std::to_string(h) + ", bands of " + std::to_string(band) + " rows";
+  p.summary = size_name(w, h) + ", bands of " + std::to_string(band) + " rows";
   return p;
 }
 

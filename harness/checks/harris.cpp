@@ -14,6 +14,7 @@
 #include "family.h"
 #include "io.h"
 #include "patterns.h"
+#include "names.h"
 
 namespace bvb {
 namespace {
@@ -135,7 +136,7 @@ void check(Checker &ck) {
       for (Pattern p : ck.patterns()) inputs.push_back({pattern_name(p), make_plane(p, s.w, s.h, ss, rng, frames)});
       for (int k = 0; k < 3; ++k) inputs.push_back({"stripes" + std::to_string(k), stripes(k, s.w, s.h, ss)});
       for (auto &in : inputs) {
-        std::string name = std::to_string(s.w) + "x" + std::to_string(s.h) + " strides " + std::to_string(ss) +
+        std::string name = size_name(s.w, s.h) + " strides " + std::to_string(ss) +
                            "/" + std::to_string(ds) + " " + in.first;
         CheckCall c = response_call(s.w, s.h, ss, ds, std::move(in.second), name);
         // Half the calls where the robot runs it (the assembly's DMA path); a third of those with
@@ -168,7 +169,7 @@ void check(Checker &ck) {
         for (int y = 0; y < s.h; ++y)
           for (int x = 0; x < s.w; ++x) maxv = std::max(maxv, resp[size_t(y) * stride + x]);
         const int32_t threshold = variant >= 2 ? rng.uniform(0, 1) : maxv / rng.uniform(20, 400);
-        const std::string base = std::to_string(s.w) + "x" + std::to_string(s.h) + " stride " +
+        const std::string base = size_name(s.w, s.h) + " stride " +
                                  std::to_string(stride) + " " + what + " thr " + std::to_string(threshold);
         {
           const int32_t max_corners = rng.uniform(0, 3) == 0 ? rng.uniform(0, 3) : rng.uniform(1, 64);
@@ -197,7 +198,7 @@ std::vector<uint8_t> bench_frame(int w, int h, Rng &) { return hermetic_texture(
 // A robot's setting for the corner kernels: candidates above 1% of the peak response (OpenCV's
 // default quality level), the 32 strongest at least 8 pixels apart.
 CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
-  const std::string size = std::to_string(w) + "x" + std::to_string(h);
+  const std::string size = size_name(w, h);
   auto img = bench_frame(w, h, rng);
   if (kernel == "harris_response") {
     // Frames in SDRAM, the scratch (6.4 KB at 160, 23.7 KB at 640) in L1 bank B.
@@ -244,7 +245,7 @@ RunPlan plan_run(RunRequest &req) {
       for (size_t i = 0; i < r.size(); ++i) out.data[i] = uint8_t(std::max<int64_t>(0, int64_t(r[i]) * 255 / maxv));
       write_image(path, out);
     };
-    p.summary = std::to_string(w) + "x" + std::to_string(h) + ", response (positive part, scaled to the peak)";
+    p.summary = size_name(w, h) + ", response (positive part, scaled to the peak)";
     return p;
   }
   const int permille = req.params.get_int("threshold_permille", 10, 0, 1000);
@@ -273,7 +274,7 @@ RunPlan plan_run(RunRequest &req) {
       for (int k = 0; k < n; ++k) mark(out, c[2 * k] & 0xFFFF, c[2 * k] >> 16, 0);
       write_image(path, out);
     };
-    p.summary = std::to_string(w) + "x" + std::to_string(h) + ", candidates above " + std::to_string(thr);
+    p.summary = size_name(w, h) + ", candidates above " + std::to_string(thr);
     return p;
   }
   p.call = select_call(host_nms(resp, w, h, w, thr), max_corners, dist, "run", double(w) * h);
@@ -287,7 +288,7 @@ RunPlan plan_run(RunRequest &req) {
     }
     write_image(path, out);
   };
-  p.summary = std::to_string(w) + "x" + std::to_string(h) + ", corners above " + std::to_string(thr) +
+  p.summary = size_name(w, h) + ", corners above " + std::to_string(thr) +
               " marked with crosses";
   return p;
 }

@@ -17,6 +17,7 @@
 #include "io.h"
 #include "patterns.h"
 #include "formats.h"
+#include "names.h"
 
 namespace bvb {
 namespace {
@@ -228,8 +229,6 @@ std::vector<int16_t> make_flow(int w, int h, int stride, Rng &rng, std::string *
     }
   return uv;
 }
-
-std::string size_name(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
 
 CheckCall prepare_call(int w, int h, int stride, const FramePair &p, int32_t alpha2, const std::string &name) {
   CheckCall c;

@@ -19,6 +19,7 @@
 #include "io.h"
 #include "patterns.h"
 #include "formats.h"
+#include "names.h"
 
 namespace bvb {
 namespace {
@@ -124,7 +125,7 @@ void check(Checker &ck) {
         const int stride = pick_stride(s.w, rng);
         const int levels = rng.uniform(1, max_levels(s.w, s.h));
         CheckCall c = pyramid_call(s.w, s.h, stride, levels, make_plane(p, s.w, s.h, stride, rng, frames),
-                                   std::to_string(s.w) + "x" + std::to_string(s.h) + " stride " +
+                                   size_name(s.w, s.h) + " stride " +
                                        std::to_string(stride) + " levels " + std::to_string(levels) + " " +
                                        pattern_name(p));
         ck.place_randomly(c);
@@ -212,7 +213,7 @@ std::vector<int32_t> corners(const std::vector<uint8_t> &img, int w, int h, int 
 }
 
 CheckCall bench_call(const std::string &kernel, int w, int h, Rng &) {
-  const std::string size = std::to_string(w) + "x" + std::to_string(h);
+  const std::string size = size_name(w, h);
   TrackSetup t;
   t.w = w;
   t.h = h;
@@ -263,7 +264,7 @@ RunPlan plan_run(RunRequest &req) {
         for (int x = 0; x < lw; ++x) out.at(x, y) = l == 0 ? bufs[0][size_t(y) * w + x] : src[size_t(y) * s + x];
       write_image(path, out);
     };
-    p.summary = std::to_string(w) + "x" + std::to_string(h) + ", level " + std::to_string(levels - 1) + " written";
+    p.summary = size_name(w, h) + ", level " + std::to_string(levels - 1) + " written";
     return p;
   }
   if (req.inputs.size() != 2) throw InputError("lk_track takes two --in frames (previous, next)");
@@ -306,7 +307,7 @@ RunPlan plan_run(RunRequest &req) {
     write_text_output(path, text);
   };
   p.kind = OutputKind::Text;
-  p.summary = std::to_string(t.w) + "x" + std::to_string(t.h) + ", " + std::to_string(pr.count) + " Harris corners tracked";
+  p.summary = size_name(t.w, t.h) + ", " + std::to_string(pr.count) + " Harris corners tracked";
   return p;
 }
 

@@ -6,6 +6,7 @@
 #include "family.h"
 #include "io.h"
 #include "patterns.h"
+#include "names.h"
 
 namespace bvb {
 namespace {
@@ -60,7 +61,7 @@ void check(Checker &ck) {
       inputs.push_back({"mask", ms, random_mask(s.w, s.h, ms, rng)});
       for (auto &in : inputs) {
         const int ds = pick_stride(s.w, rng);
-        std::string name = std::to_string(s.w) + "x" + std::to_string(s.h) + " " + in.label + " strides " +
+        std::string name = size_name(s.w, s.h) + " " + in.label + " strides " +
                            std::to_string(in.stride) + "/" + std::to_string(ds);
         CheckCall c = morph_call(kernel, s.w, s.h, in.stride, ds, std::move(in.data), name);
         // Source and destination at any alignment; the scratch is documented 4-byte aligned.
@@ -77,7 +78,7 @@ void check(Checker &ck) {
 CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
   // Frames in SDRAM, the scratch (H rows, band buffers and DMA jobs: 17.2 KB at 320) in L1 bank B.
   CheckCall c = morph_call(kernel, w, h, w, w, make_plane(Pattern::Noise, w, h, w, rng, ""),
-                           std::to_string(w) + "x" + std::to_string(h));
+                           size_name(w, h));
   c.bufs[2].place = BVB_PLACE_L1B;
   return c;
 }
@@ -101,7 +102,7 @@ RunPlan plan_run(RunRequest &req) {
     out.data = bufs[1];
     write_image(path, out);
   };
-  p.summary = std::to_string(w) + "x" + std::to_string(h);
+  p.summary = size_name(w, h);
   return p;
 }
 

@@ -18,6 +18,7 @@
 #include "io.h"
 #include "patterns.h"
 #include "formats.h"
+#include "names.h"
 
 namespace bvb {
 namespace {
@@ -394,7 +395,7 @@ std::vector<std::pair<int, int>> bench_points(int w, int h) {
 }
 
 CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
-  const std::string name = std::to_string(w) + "x" + std::to_string(h);
+  const std::string name = size_name(w, h);
   Frames fr = bench_frames(w, h, rng);
   CheckCall c = kernel == "ncc_match" ? match_call(fr, bench_points(w, h), kBenchR, kBenchS, name)
                                       : scoremap_call(fr, w / 2, h / 2, kBenchR, kBenchS, name);
@@ -450,7 +451,7 @@ RunPlan plan_run(RunRequest &req) {
       write_text_output(path, text);
     };
     p.kind = OutputKind::Text;
-    p.summary = std::to_string(fr.w) + "x" + std::to_string(fr.h) + ", " + std::to_string(pts.size()) +
+    p.summary = size_name(fr.w, fr.h) + ", " + std::to_string(pts.size()) +
                 " points, r " + std::to_string(r) + ", s " + std::to_string(s);
   } else {
     const int x = req.params.get_int("x", fr.w / 2, 0, fr.w - 1), y = req.params.get_int("y", fr.h / 2, 0, fr.h - 1);
@@ -467,7 +468,7 @@ RunPlan plan_run(RunRequest &req) {
       }
       write_image(path, out);
     };
-    p.summary = std::to_string(fr.w) + "x" + std::to_string(fr.h) + ", point " + std::to_string(x) + "," +
+    p.summary = size_name(fr.w, fr.h) + ", point " + std::to_string(x) + "," +
                 std::to_string(y) + ", r " + std::to_string(r) + ", s " + std::to_string(s);
   }
   for (auto &bf : p.call.bufs) bf.place = bf.name == "scratch" ? BVB_PLACE_L1A : BVB_PLACE_WINDOW;

@@ -12,6 +12,7 @@
 #include "robot_view.h"
 #include "scene/bench_scene.h"
 #include "formats.h"
+#include "names.h"
 
 namespace bvb {
 namespace {
@@ -77,7 +78,7 @@ void check_grow(Checker &ck) {
       const int full = s.w * s.h;
       const int r = rng.uniform(0, 4);
       const int cap = r == 0 ? rng.uniform(0, 3) : r == 1 ? rng.uniform(1, std::max(full / 8, 1)) : full;
-      std::string name = std::to_string(s.w) + "x" + std::to_string(s.h) + " strides " + std::to_string(is) +
+      std::string name = size_name(s.w, s.h) + " strides " + std::to_string(is) +
                          "/" + std::to_string(ms) + " " + pattern_name(pat) + " seed " +
                          std::to_string(prm.seed_x) + "," + std::to_string(prm.seed_y) + " tol " +
                          std::to_string(prm.tol) + " conn " + std::to_string(prm.connectivity) + " queue " +
@@ -94,7 +95,7 @@ void check_grow(Checker &ck) {
       bvb_region_params prm{s.w / 2, s.h - 1, kTol, pose & 1 ? 8 : 4};
       const int cap = pose == 2 ? 2 * (s.w + s.h) : s.w * s.h;
       CheckCall c = grow_call(grey.data, s.w, s.h, s.w, s.w, prm, cap,
-                              std::to_string(s.w) + "x" + std::to_string(s.h) + " robot view " +
+                              size_name(s.w, s.h) + " robot view " +
                                   std::to_string(pose) + " conn " + std::to_string(prm.connectivity) +
                                   " queue " + std::to_string(cap));
       place_buffers(ck, c, rng);
@@ -145,7 +146,7 @@ void check_free(Checker &ck) {
           }
       const int g = rng.uniform(0, 5);
       const int min_gap = g == 0 ? 1 : g == 1 ? s.h + rng.uniform(0, 3) : rng.uniform(1, 6);
-      std::string name = std::to_string(s.w) + "x" + std::to_string(s.h) + " stride " + std::to_string(ms) +
+      std::string name = size_name(s.w, s.h) + " stride " + std::to_string(ms) +
                          " " + pattern_name(pat) + (threshold ? " >=128" : " raw") + " min_gap " +
                          std::to_string(min_gap);
       CheckCall c = free_call(std::move(mask), s.w, s.h, ms, min_gap, name);
@@ -172,7 +173,7 @@ void check(Checker &ck) {
 
 CheckCall bench_call(const std::string &kernel, int w, int h, Rng &) {
   const Image &grey = bench_scene(w, h).grey[0];  // hermetic: scene/bench_scene.h
-  const std::string name = std::to_string(w) + "x" + std::to_string(h);
+  const std::string name = size_name(w, h);
   if (kernel == "free_space") return free_call(floor_mask(grey, kTol, 4), w, h, w, 3, name);
   bvb_region_params prm{w / 2, h - 1, kTol, 4};
   return grow_call(grey.data, w, h, w, w, prm, w * h, name);
@@ -251,7 +252,7 @@ RunPlan plan_grow(RunRequest &req) {
                 st.count ? double(st.sum_x) / st.count : 0.0, st.count ? double(st.sum_y) / st.count : 0.0,
                 st.dropped);
   };
-  p.summary = std::to_string(w) + "x" + std::to_string(h) + " seed " + std::to_string(prm.seed_x) + "," +
+  p.summary = size_name(w, h) + " seed " + std::to_string(prm.seed_x) + "," +
               std::to_string(prm.seed_y) + " tol " + std::to_string(prm.tol);
   return p;
 }
@@ -275,7 +276,7 @@ RunPlan plan_free(RunRequest &req) {
     write_text_output(path, csv);
   };
   p.kind = OutputKind::Text;
-  p.summary = std::to_string(w) + "x" + std::to_string(h) + " min_gap " + std::to_string(min_gap);
+  p.summary = size_name(w, h) + " min_gap " + std::to_string(min_gap);
   return p;
 }
 

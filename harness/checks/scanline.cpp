@@ -9,6 +9,7 @@
 #include "io.h"
 #include "patterns.h"
 #include "formats.h"
+#include "names.h"
 
 namespace bvb {
 namespace {
@@ -151,7 +152,7 @@ void check(Checker &ck) {
 }
 
 CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
-  const std::string name = std::to_string(w) + "x" + std::to_string(h);
+  const std::string name = size_name(w, h);
   if (kernel == "scanline_profile_u8") {
     const int rows = std::min(h / 2, BVB_SCANLINE_MAX_ROWS);
     CheckCall c = profile_call(w, rows, w, make_plane(Pattern::Noise, w, rows, w, rng, ""), name);

@@ -6,11 +6,10 @@
 #include "family.h"
 #include "io.h"
 #include "patterns.h"
+#include "names.h"
 
 namespace bvb {
 namespace {
-
-std::string size_name(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
 
 CheckCall u8_call(int w, int h, int ss, int ds, std::vector<uint8_t> src, const std::string &name) {
   CheckCall c;

@@ -7,6 +7,7 @@
 #include "io.h"
 #include "patterns.h"
 #include "scene/render.h"
+#include "names.h"
 
 namespace bvb {
 namespace {
@@ -75,7 +76,7 @@ void check(Checker &ck) {
       for (Pattern p : ck.patterns()) {
         // Any stride, odd ones included: rows of every alignment on both sides.
         const int ss = pick_stride(2 * w, rng), ds = pick_stride(rgb ? 3 * w : w, rng);
-        std::string name = std::to_string(w) + "x" + std::to_string(s.h) + " strides " + std::to_string(ss) +
+        std::string name = size_name(w, s.h) + " strides " + std::to_string(ss) +
                            "/" + std::to_string(ds) + " " + pattern_name(p);
         CheckCall c = yuv_call(kernel, w, s.h, ss, ds, uyvy_plane(p, w, s.h, ss, rng, ck.options().frames_real),
                                name);
@@ -95,7 +96,7 @@ void check(Checker &ck) {
 CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
   const bool rgb = kernel == "uyvy_to_rgb24";
   CheckCall c = yuv_call(kernel, w, h, 2 * w, rgb ? 3 * w : w, uyvy_plane(Pattern::Noise, w, h, 2 * w, rng, ""),
-                         std::to_string(w) + "x" + std::to_string(h));
+                         size_name(w, h));
   // Frames in SDRAM, the grey kernel's band buffers in L1 bank B.
   if (!rgb) c.bufs[2].place = BVB_PLACE_L1B;
   return c;
@@ -141,7 +142,7 @@ RunPlan plan_run(RunRequest &req) {
     img.data = bufs[1];
     write_image(out, img);
   };
-  p.summary = std::to_string(w) + "x" + std::to_string(h);
+  p.summary = size_name(w, h);
   return p;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "io.h"
+#include "names.h"
 
 namespace bvb {
 
@@ -12,9 +13,7 @@ namespace {
 
 void check_same_size(const FlowField &a, const FlowField &b, const char *what) {
   if (a.width != b.width || a.height != b.height)
-    throw InputError(std::string(what) + ": flow sizes differ (" + std::to_string(a.width) + "x" +
-                     std::to_string(a.height) + " vs " + std::to_string(b.width) + "x" +
-                     std::to_string(b.height) + ")");
+    throw InputError(std::string(what) + ": flow sizes differ (" + size_name(a.width, a.height) + " vs " + size_name(b.width, b.height) + ")");
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "bvb/hornschunck.h"
 #include "hs_double.h"
 #include "io.h"
+#include "names.h"
 
 namespace bvb {
 
@@ -88,7 +89,7 @@ std::string format_hs_accuracy_table(const std::vector<HsAccuracyRow> &rows, int
                 "max px", "fixed", "double", "fixed", "double");
   out += line;
   for (const HsAccuracyRow &r : rows) {
-    const std::string size = std::to_string(r.width) + "x" + std::to_string(r.height);
+    const std::string size = size_name(r.width, r.height);
     std::snprintf(line, sizeof line, "%-12s %9s %10.5f %10.4f %9.4f %9.4f %9.3f %9.3f\n",
                   r.sequence.c_str(), size.c_str(), r.fixed_vs_double.mean, r.fixed_vs_double.max,
                   r.fixed.epe, r.dbl.epe, r.fixed.ae, r.dbl.ae);

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "io.h"
+#include "names.h"
 
 namespace bvb {
 
@@ -12,9 +13,7 @@ namespace {
 void check_frames(const Image &a, const Image &b) {
   if (a.channels != 1 || b.channels != 1) throw InputError("Horn-Schunck: frames must be grey");
   if (a.width != b.width || a.height != b.height)
-    throw InputError("Horn-Schunck: frame sizes differ (" + std::to_string(a.width) + "x" +
-                     std::to_string(a.height) + " vs " + std::to_string(b.width) + "x" +
-                     std::to_string(b.height) + ")");
+    throw InputError("Horn-Schunck: frame sizes differ (" + size_name(a.width, a.height) + " vs " + size_name(b.width, b.height) + ")");
   if (a.width < 1 || a.height < 1) throw InputError("Horn-Schunck: empty frame");
 }
 

@@ -234,21 +234,6 @@ std::string bench_markdown(const std::vector<BenchRow> &rows) {
   return o.str();
 }
 
-namespace {
-// The size a case names: "WxH", alone or followed by a space and more ("160x120 N=10").
-bool case_size(const std::string &cs, int *w, int *h) {
-  size_t i = 0;
-  auto number = [&](int *v) {
-    const size_t start = i;
-    long n = 0;
-    while (i < cs.size() && std::isdigit((unsigned char)cs[i]) && i - start < 6) n = n * 10 + (cs[i++] - '0');
-    *v = int(n);
-    return i > start && !(i < cs.size() && std::isdigit((unsigned char)cs[i]));
-  };
-  if (!number(w) || i >= cs.size() || cs[i++] != 'x' || !number(h)) return false;
-  return i == cs.size() || cs[i] == ' ';
-}
-}  // namespace
 
 std::vector<Budget> load_budgets(const std::string &path, std::string *timing) {
   auto bytes = read_file(path);
@@ -280,13 +265,13 @@ std::vector<Budget> parse_budgets(const std::string &text, const std::string &pa
     if (std::count(kv.first.begin(), kv.first.end(), '/') != 2)
       throw InputError(path + ": budget key '" + kv.first + "' is not kernel/impl/case");
     // The case starts with the size it is measured at, which must be one the kernel can take.
-    const std::string kernel = kv.first.substr(0, kv.first.find('/'));
-    const std::string cs = kv.first.substr(kv.first.rfind('/') + 1);
-    int w = 0, h = 0;
-    if (!case_size(cs, &w, &h) || w < 1 || h < 1 || w > kMaxFrameDim || h > kMaxFrameDim)
+    const std::string kernel = budget_key_kernel(kv.first);
+    Size sz{0, 0};
+    if (!parse_size_prefix(budget_key_case(kv.first), &sz) || sz.w < 1 || sz.h < 1 || sz.w > kMaxFrameDim ||
+        sz.h > kMaxFrameDim)
       throw InputError(path + ": budget key '" + kv.first + "': the case must start with WxH, 1.." +
                        std::to_string(kMaxFrameDim) + " each");
-    const std::string why = bench_size_problem(kernel, w, h);
+    const std::string why = bench_size_problem(kernel, sz.w, sz.h);
     if (!why.empty()) throw InputError(path + ": budget key '" + kv.first + "': " + why);
     out.push_back(bd);
   }
@@ -375,10 +360,8 @@ std::vector<Size> budget_sizes(const std::vector<Budget> &budgets) {
   std::set<std::pair<int, int>> seen;
   std::vector<Size> out;
   for (const auto &b : budgets) {
-    auto slash = b.key.rfind('/');
-    int w = 0, h = 0;
-    if (std::sscanf(b.key.c_str() + slash + 1, "%dx%d", &w, &h) == 2 && seen.insert({w, h}).second)
-      out.push_back({w, h});
+    Size s{0, 0};
+    if (parse_size_prefix(budget_key_case(b.key), &s) && seen.insert({s.w, s.h}).second) out.push_back(s);
   }
   return out;
 }

@@ -24,7 +24,7 @@ struct BenchRow {
   std::string placement;  // where the buffers were: "SDRAM", or "src:SDRAM dst:L1A ..."
   double lower_bound = 0;  // cycles; 0 when the kernel states none
   std::string error;       // the kernel failed its check during the bench
-  std::string key(const char *impl) const { return kernel + "/" + impl + "/" + case_name; }
+  std::string key(const char *impl) const { return budget_key(kernel, impl, case_name); }
 };
 
 struct BenchOptions {

@@ -8,6 +8,7 @@
 
 #include "patterns.h"
 #include "simdriver.h"
+#include "names.h"
 
 namespace bvb {
 
@@ -304,7 +305,7 @@ void Checker::place_streaming(CheckCall &call, size_t scratch, Rng &rng) {
 void Checker::add(CheckCall call, Observer observer) {
   // The case number counts every call the family makes, queued or not, so -k and --case leave
   // every other case's number and stream as they are.
-  call.case_id = call.kernel + ":" + std::to_string(case_no_);
+  call.case_id = case_id(call.kernel, case_no_);
   if (opts_.adversarial) make_adversarial(call, rng_);
   rng_ = case_stream(opts_.seed, family_, ++case_no_);
   if (!wants(call.kernel)) return;
@@ -322,7 +323,7 @@ std::vector<const CheckCall *> Checker::pending() const {
 std::vector<std::string> Checker::coverage_gaps() const {
   std::vector<std::string> gaps;
   std::string only_kernel;
-  if (!opts_.only_case.empty()) only_kernel = opts_.only_case.substr(0, opts_.only_case.rfind(':'));
+  if (!opts_.only_case.empty()) only_kernel = case_kernel(opts_.only_case);
   for (const auto &k : target_.registry().kernels()) {
     if (!glob_match(opts_.kernel_glob, k.name)) continue;
     if (!only_kernel.empty() && resolve(only_kernel) != k.name) continue;
@@ -332,7 +333,7 @@ std::vector<std::string> Checker::coverage_gaps() const {
     auto it = tally_.find(k.name);
     for (const auto &impl : impls)
       if (it == tally_.end() || !it->second.count(impl) || it->second.at(impl).calls == 0)
-        gaps.push_back(k.name + " (" + impl + ")");
+        gaps.push_back(kernel_impl_name(k.name, impl));
   }
   return gaps;
 }
@@ -373,7 +374,7 @@ std::string format_failure(const Failure &f) {
   drop_kind_prefix(g);
   char seed[16];
   std::snprintf(seed, sizeof seed, "%u", g.seed);
-  return "FAILED " + g.kernel + " (" + g.impl + ") " + g.case_name + ", seed " + seed + ", case " + g.case_id +
+  return "FAILED " + kernel_impl_name(g.kernel, g.impl) + " " + g.case_name + ", seed " + seed + ", case " + g.case_id +
          ": " + failure_kind_name(g.kind) + ": " + sim::printable(g.message, 2000) + "\n  replay: " +
          replay_command(g) + "\n";
 }
@@ -392,7 +393,7 @@ std::string format_check_report(const Tallies &tally, const std::vector<Failure>
   std::map<std::string, size_t> shown;
   std::map<std::string, std::string> kernel_of;  // "kernel (impl)" -> kernel, for those cut short
   for (const auto &f : failures) {
-    const std::string key = f.kernel + " (" + f.impl + ")";
+    const std::string key = kernel_impl_name(f.kernel, f.impl);
     if (shown[key]++ >= max_shown) {
       kernel_of[key] = f.kernel;
       continue;

@@ -54,7 +54,7 @@ std::string default_gdb() {
 
 Call case_call(const Target &target, const std::string &case_id, uint32_t seed, uint32_t impl,
                std::string *case_name) {
-  const std::string kernel = case_id.substr(0, case_id.rfind(':'));
+  const std::string kernel = case_kernel(case_id);
   const KernelInfo &k = target.registry().get(kernel);
   if (impl == BVB_IMPL_ASM && !k.has_asm) throw InputError(kernel + " has no assembly implementation (--impl c)");
   const Family *f = family_of(kernel);

@@ -6,6 +6,7 @@
 #include "bvb/hornschunck.h"
 
 #include "io.h"
+#include "names.h"
 
 namespace bvb {
 
@@ -101,9 +102,9 @@ const SizeRule *bench_size_rule(const std::string &kernel) {
 std::string bench_size_problem(const std::string &kernel, int w, int h) {
   const SizeRule *r = bench_size_rule(kernel);
   if (!r) return "";
-  const std::string got = std::to_string(w) + "x" + std::to_string(h);
+  const std::string got = size_name(w, h);
   if (w < r->min_w || h < r->min_h || (r->even_width && (w & 1)))
-    return kernel + " needs at least " + std::to_string(r->min_w) + "x" + std::to_string(r->min_h) +
+    return kernel + " needs at least " + size_name(r->min_w, r->min_h) +
            (r->even_width ? " and an even width" : "") + ", not " + got;
   return "";
 }

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "io.h"
+#include "names.h"
 
 namespace bvb {
 
@@ -81,7 +82,7 @@ Image parse_png(const std::vector<uint8_t> &bytes, const std::string &name) {
   if (im.format & PNG_FORMAT_FLAG_LINEAR)
     throw InputError(name + ": 16-bit PNG; only 8-bit grey or RGB PNGs are read");
   if (im.width < 1 || im.height < 1 || im.width > uint32_t(kMaxFrameDim) || im.height > uint32_t(kMaxFrameDim))
-    throw InputError(name + ": image " + std::to_string(im.width) + "x" + std::to_string(im.height) +
+    throw InputError(name + ": image " + size_name(im.width, im.height) +
                      " outside 1.." + std::to_string(kMaxFrameDim) + " pixels a side");
   const bool colour = (im.format & PNG_FORMAT_FLAG_COLOR) != 0;
   im.format = colour ? PNG_FORMAT_RGB : PNG_FORMAT_GRAY;
@@ -226,7 +227,7 @@ Image image_from_npy(const NpyArray &a, const std::string &path) {
     throw InputError(path + ": a frame in .npy is uint8 (|u1) of shape (H, W) or (H, W, 3), not " + a.dtype +
                      " of " + std::to_string(a.shape.size()) + " dimensions");
   if (a.shape[0] < 1 || a.shape[1] < 1 || a.shape[0] > size_t(kMaxFrameDim) || a.shape[1] > size_t(kMaxFrameDim))
-    throw InputError(path + ": image " + std::to_string(a.shape[1]) + "x" + std::to_string(a.shape[0]) +
+    throw InputError(path + ": image " + size_name(a.shape[1], a.shape[0]) +
                      " outside 1.." + std::to_string(kMaxFrameDim) + " pixels a side");
   Image img(int(a.shape[1]), int(a.shape[0]), rgb ? 3 : 1);
   img.data = a.data;

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "cleanup.h"
+#include "names.h"
 
 namespace bvb {
 
@@ -197,7 +198,7 @@ Image parse_pnm(const std::vector<uint8_t> &bytes, const std::string &name) {
   int w = h.number("width"), ht = h.number("height"), maxval = h.number("maxval");
   if (w <= 0 || ht <= 0) throw InputError(name + ": zero image size");
   if (w > kMaxFrameDim || ht > kMaxFrameDim)
-    throw InputError(name + ": image " + std::to_string(w) + "x" + std::to_string(ht) +
+    throw InputError(name + ": image " + size_name(w, ht) +
                      " larger than " + std::to_string(kMaxFrameDim) + " pixels a side");
   if (maxval < 1 || maxval > 255) throw InputError(name + ": maxval must be 1..255 (8-bit only)");
   Image img(w, ht, channels);
@@ -258,7 +259,7 @@ std::vector<uint8_t> parse_uyvy(std::vector<uint8_t> bytes, const std::string &n
   const size_t need = size_t(width) * height * 2;
   if (bytes.size() != need)
     throw InputError(name + ": UYVY file has " + std::to_string(bytes.size()) +
-                     " bytes, " + std::to_string(width) + "x" + std::to_string(height) +
+                     " bytes, " + size_name(width, height) +
                      " needs " + std::to_string(need));
   return bytes;
 }

@@ -18,6 +18,12 @@ namespace bvb {
 struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// A kernel's call failed its check (a wrong result, a fault, a clobbered register) where the
+// command cannot go on without it (a pipeline's frame, the profiled call): exit 1, as a failed
+// check is.
+struct CallFailed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 // Sizes the harness accepts for any frame: large enough for every kernel's memory map.
 constexpr int kMaxFrameDim = 4096;
@@ -32,6 +38,9 @@ std::vector<uint8_t> read_file(const std::string &path, size_t max_bytes = kMaxI
 // over it; a symbolic link is followed (the file it names is replaced, the link kept); a
 // character device (/dev/null) or a FIFO is written straight; anything else is refused.
 void write_file_atomic(const std::string &path, const void *data, size_t size);
+inline void write_file_atomic(const std::string &path, const std::string &text) {
+  write_file_atomic(path, text.data(), text.size());
+}
 inline void write_file_atomic(const std::string &path, const std::vector<uint8_t> &bytes) {
   write_file_atomic(path, bytes.data(), bytes.size());
 }

@@ -8,6 +8,7 @@
 
 #include "check.h"
 #include "image.h"
+#include "names.h"
 
 namespace bvb {
 
@@ -24,9 +25,6 @@ const char *pattern_name(Pattern p);
 std::vector<uint8_t> make_plane(Pattern p, int width, int height, int stride, Rng &rng,
                                 const std::string &frames_real);
 
-struct Size {
-  int w, h;
-};
 // Sizes to check a kernel whose smallest legal frame is min_w x min_h: the smallest, one more
 // in each direction, odd and even small sizes, the SRV-1's 160x120, a few seeded random ones;
 // a campaign adds 320x240, 640x480 and more random sizes.

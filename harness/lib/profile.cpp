@@ -21,6 +21,7 @@
 #include "io.h"
 #include "json.h"
 #include "simdriver.h"
+#include "names.h"
 
 namespace bvb {
 
@@ -364,7 +365,7 @@ Profile run_profile(const Target &target, const ProfileOptions &opts) {
   ck.flush();
   if (!ck.failures().empty()) {
     const Failure &f = ck.failures().front();
-    throw ProfileCheckFailed(f.kernel + " (" + f.impl + ") fails its check on the profiled call, so its " +
+    throw ProfileCheckFailed(kernel_impl_name(f.kernel, f.impl) + " fails its check on the profiled call, so its " +
                              "cycles mean nothing: " + failure_kind_name(f.kind) + ": " + f.message);
   }
   if (!seen) throw sim::SetupError("the profiled call did not run");
@@ -408,7 +409,7 @@ std::string short_file(const std::string &f) {
 
 std::string profile_text(const Profile &p, size_t top_lines) {
   std::ostringstream o;
-  o << p.kernel << " (" << p.impl << ") " << p.case_name << ", timing " << p.timing << ": "
+  o << kernel_impl_name(p.kernel, p.impl) << " " << p.case_name << ", timing " << p.timing << ": "
     << with_commas(p.measured) << " cycles (the call's count; the profile's " << with_commas(p.total)
     << " include the " << p.overhead << "-cycle call overhead)\n";
   o << "  issue " << with_commas(p.issue) << " (" << fmt("%.1f", 100.0 * double(p.issue) / double(p.total))
@@ -491,7 +492,7 @@ std::string profile_html(const Profile &p) {
   for (size_t k = 0; (k = data.find("</", k)) != std::string::npos; k += 3) data.replace(k, 2, "<\\/");
   std::ostringstream o;
   o << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>bfbench profile: "
-    << p.kernel << " (" << p.impl << ") " << p.case_name << "</title>\n<style>\n"
+    << kernel_impl_name(p.kernel, p.impl) << " " << p.case_name << "</title>\n<style>\n"
        "body{font:13px/1.35 system-ui,sans-serif;margin:1.5em;color:#222}\n"
        "table{border-collapse:collapse}td,th{padding:1px 6px;text-align:right;white-space:nowrap}\n"
        "td.src{text-align:left;font-family:monospace;white-space:pre}th{border-bottom:1px solid #999}\n"

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "io.h"
 #include "patterns.h"
 #include "target.h"
 
@@ -90,8 +91,8 @@ struct ProfileOptions {
   uint32_t seed = 1;
 };
 // The profiled call failed its check: its cycles mean nothing (bfbench profile exits 1).
-struct ProfileCheckFailed : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct ProfileCheckFailed : CallFailed {
+  using CallFailed::CallFailed;
 };
 
 // Runs the kernel's bench call once under the profile, checks it (a wrong answer is reported,

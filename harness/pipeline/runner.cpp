@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "io.h"
+#include "options.h"
 #include "patterns.h"
 #include "simdriver.h"
 #include "svg.h"
@@ -121,7 +122,7 @@ PipelineRun run_pipeline(const PipelineDef &def, const Target *target, const Sce
       const Call call = target_call(cc, k.index, impl);
       CallResult r = session->call(call);
       std::string err = describe_failure(call, r, target->elf());
-      if (!err.empty()) throw sim::SetupError(def.name + " frame " + std::to_string(f) + ": " + err);
+      if (!err.empty()) throw CallFailed(def.name + " frame " + std::to_string(f) + ": " + err);
       rec.out = def.decode(r.data);
       rec.cycles = r.cycles;
       if (opts.compare_host) {
@@ -236,36 +237,6 @@ std::vector<std::string> pipeline_summary(const PipelineDef &def, const Pipeline
 
 namespace {
 
-const char *kHelp =
-    "usage: bfbench pipeline NAME (--scene DIR | --spec SPEC) [--impl asm|c|host] [--closed-loop]\n"
-    "                        [--frames N] [--param K=V]... [--csv FILE] [--svg PREFIX]\n"
-    "                        [--compare-host] [--quiet] [--firmware ELF]\n\n"
-    "Runs a vision pipeline frame by frame in the simulator on a scene directory (bfbench scene)\n"
-    "or a generated scene (SPEC as for bfbench scene). Prints per frame the cycles, the frame\n"
-    "rate at 486 MHz (the SRV-1) and 600 MHz, the decision or pose and the ground truth, then a\n"
-    "summary. --closed-loop lets the pipeline's decisions drive the robot (generated scenes\n"
-    "only). --compare-host also runs the host build and fails on any difference. --svg writes\n"
-    "PREFIX-trajectory.svg and PREFIX-cycles.svg.\n\npipelines:\n";
-
-std::string take(std::vector<std::string> &a, const std::string &name) {
-  for (size_t i = 0; i + 1 < a.size(); ++i)
-    if (a[i] == name) {
-      std::string v = a[i + 1];
-      a.erase(a.begin() + long(i), a.begin() + long(i) + 2);
-      return v;
-    }
-  for (size_t i = 0; i < a.size(); ++i)
-    if (a[i] == name) throw InputError(name + " needs a value");
-  return "";
-}
-
-bool flag(std::vector<std::string> &a, const std::string &name) {
-  auto it = std::find(a.begin(), a.end(), name);
-  if (it == a.end()) return false;
-  a.erase(it);
-  return true;
-}
-
 // The arena's static obstacles as outlines in their own colours, under the trajectory.
 std::vector<Shape> arena_shapes(const World &w) {
   std::vector<Shape> out;
@@ -312,90 +283,86 @@ void write_svgs(const std::string &prefix, const std::string &name, const Pipeli
   write_file_atomic(prefix + "-cycles.svg", c.data(), c.size());
 }
 
+int pipeline_main(int argc, char **argv) {
+  std::string scene, spec, csv, svg, elf;
+  std::vector<std::string> name, param_list;
+  PipelineRunOptions opts;
+  bool quiet = false;
+  std::string listed;
+  for (const PipelineDef *p : pipelines()) {
+    char line[256];
+    std::snprintf(line, sizeof line, "  %-16s %s\n", p->name.c_str(), p->summary.c_str());
+    listed += line;
+  }
+  CommandLine cl("pipeline");
+  cl.about("Runs a vision pipeline frame by frame in the simulator on a scene directory (bfbench scene)\n"
+           "or a generated scene (SPEC as for bfbench scene). Prints per frame the cycles, the frame\n"
+           "rate at 486 MHz (the SRV-1) and 600 MHz, the decision or pose and the ground truth, then a\n"
+           "summary. Exactly one of --scene and --spec.")
+      .operands("NAME", &name, 1, 1, "(bfbench pipeline --help lists them)")
+      .text("--scene", "DIR", &scene, "a scene directory (bfbench scene --out)")
+      .text("--spec", "SPEC", &spec, "a scene generated as bfbench scene --spec would")
+      .text("--impl", "asm|c|host", &opts.impl, "the build (default " + opts.impl + ")")
+      .flag("--closed-loop", &opts.closed_loop, "the pipeline's decisions drive the robot (--spec only)")
+      .integer("--frames", "N", 1, 1000000, &opts.max_frames, "at most N frames")
+      .texts("--param", "K=V", &param_list, "a pipeline parameter")
+      .text("--csv", "FILE", &csv, "write the frames as CSV")
+      .text("--svg", "PREFIX", &svg, "write PREFIX-trajectory.svg and PREFIX-cycles.svg")
+      .flag("--compare-host", &opts.compare_host, "also run the host build; fail (exit 1) on any difference")
+      .flag("--quiet", &quiet, "the summary only")
+      .text("--firmware", "ELF", &elf, "the firmware image (default this build's)")
+      .tail("pipelines:\n" + listed);
+  if (!cl.parse(argc, argv)) return kExitOk;
+  if (opts.impl != "host") parse_impl(opts.impl);
+  Params params;
+  for (const auto &p : param_list) params.set(p);
+  const PipelineDef *def = find_pipeline(name[0]);
+  if (!def) throw UsageError("unknown pipeline '" + name[0] + "' (bfbench pipeline --help)");
+  if (scene.empty() == spec.empty()) throw UsageError("give exactly one of --scene DIR and --spec SPEC");
+  if (opts.closed_loop && spec.empty()) throw UsageError("--closed-loop needs --spec (a generated scene)");
+
+  std::unique_ptr<SceneData> dir;
+  std::unique_ptr<SceneGenerator> gen;
+  if (!scene.empty()) dir = std::make_unique<SceneData>(read_scene(scene));
+  else gen = std::make_unique<SceneGenerator>(parse_scene_spec(spec));
+  std::unique_ptr<Target> target;
+  if (opts.impl != "host" || opts.compare_host) {
+    FirmwareImage fw = product_firmware();
+    if (!elf.empty()) fw.elf = elf;
+    target = std::make_unique<Target>(fw, default_simulator());
+  }
+  opts.progress = quiet && isatty(2);
+  PipelineRun run = run_pipeline(*def, target.get(), dir.get(), gen.get(), params, opts);
+  if (!quiet) {
+    std::printf("%5s %10s %8s %8s %-8s %24s %24s %7s\n", "frame", "cycles", "fps@486", "fps@600",
+                "decision", "estimated x,y,heading", "true x,y,heading", "blocked");
+    for (const auto &r : run.frames) {
+      char est[64] = "-", tru[64];
+      if (r.out.has_pose)
+        std::snprintf(est, sizeof est, "%.2f,%.2f,%.1f", r.out.x_in, r.out.y_in, r.out.heading_deg);
+      std::snprintf(tru, sizeof tru, "%.2f,%.2f,%.1f", r.in.truth.pose.x_in, r.in.truth.pose.y_in,
+                    r.in.truth.pose.heading_deg);
+      std::printf("%5d %10u %8.1f %8.1f %-8s %24s %24s %7s\n", r.in.index, r.cycles,
+                  r.cycles ? kSrv1Hz / r.cycles : 0.0, r.cycles ? kBf537MaxHz / r.cycles : 0.0,
+                  r.out.has_decision ? drive_name(r.out.decision) : "-", est, tru,
+                  r.in.truth.blocked ? "yes" : "no");
+    }
+  }
+  std::printf("%s (%s%s), %zu frames:\n", def->name.c_str(), opts.impl.c_str(),
+              opts.closed_loop ? ", closed loop" : "", run.frames.size());
+  for (const auto &l : pipeline_summary(*def, run)) std::printf("  %s\n", l.c_str());
+  if (!csv.empty()) {
+    std::string c = pipeline_csv(run);
+    write_file_atomic(csv, c.data(), c.size());
+  }
+  if (!svg.empty()) write_svgs(svg, def->name, run, dir ? &dir->arena : &gen->arena());
+  return run.mismatches.empty() ? kExitOk : kExitFailed;
+}
+
 }  // namespace
 
 int pipeline_command(int argc, char **argv) {
-  std::vector<std::string> a(argv + 1, argv + argc);
-  if (flag(a, "--help") || flag(a, "-h")) {
-    std::fputs(kHelp, stdout);
-    for (const PipelineDef *p : pipelines()) std::printf("  %-16s %s\n", p->name.c_str(), p->summary.c_str());
-    return 0;
-  }
-  try {
-    const std::string scene = take(a, "--scene"), spec = take(a, "--spec"), csv = take(a, "--csv"),
-                      svg = take(a, "--svg"), frames = take(a, "--frames"), elf = take(a, "--firmware");
-    PipelineRunOptions opts;
-    std::string impl = take(a, "--impl");
-    if (!impl.empty()) opts.impl = impl;
-    if (opts.impl != "host") parse_impl(opts.impl);
-    opts.closed_loop = flag(a, "--closed-loop");
-    opts.compare_host = flag(a, "--compare-host");
-    const bool quiet = flag(a, "--quiet");
-    Params params;
-    for (std::string p; !(p = take(a, "--param")).empty();) params.set(p);
-    if (frames.size()) {
-      char *end = nullptr;
-      long v = std::strtol(frames.c_str(), &end, 10);
-      if (*end || v < 1 || v > 1000000) throw InputError("--frames wants 1..1000000");
-      opts.max_frames = int(v);
-    }
-    for (const auto &s : a)
-      if (s.size() > 1 && s[0] == '-') throw InputError("unknown option " + s);
-    if (a.size() != 1) throw InputError("pipeline takes one NAME (bfbench pipeline --help lists them)");
-    const PipelineDef *def = find_pipeline(a[0]);
-    if (!def) throw InputError("unknown pipeline '" + a[0] + "' (bfbench pipeline --help)");
-    if (scene.empty() == spec.empty()) throw InputError("give exactly one of --scene DIR and --spec SPEC");
-    if (opts.closed_loop && spec.empty()) throw InputError("--closed-loop needs --spec (a generated scene)");
-
-    std::unique_ptr<SceneData> dir;
-    std::unique_ptr<SceneGenerator> gen;
-    if (!scene.empty()) dir = std::make_unique<SceneData>(read_scene(scene));
-    else gen = std::make_unique<SceneGenerator>(parse_scene_spec(spec));
-    std::unique_ptr<Target> target;
-    if (opts.impl != "host" || opts.compare_host) {
-      FirmwareImage fw = product_firmware();
-      if (!elf.empty()) fw.elf = elf;
-      try {
-        target = std::make_unique<Target>(fw, default_simulator());
-      } catch (const sim::SetupError &e) {
-        throw InputError(e.what());
-      }
-    }
-    opts.progress = quiet && isatty(2);
-    PipelineRun run = run_pipeline(*def, target.get(), dir.get(), gen.get(), params, opts);
-    if (!quiet) {
-      std::printf("%5s %10s %8s %8s %-8s %24s %24s %7s\n", "frame", "cycles", "fps@486", "fps@600",
-                  "decision", "estimated x,y,heading", "true x,y,heading", "blocked");
-      for (const auto &r : run.frames) {
-        char est[64] = "-", tru[64];
-        if (r.out.has_pose)
-          std::snprintf(est, sizeof est, "%.2f,%.2f,%.1f", r.out.x_in, r.out.y_in, r.out.heading_deg);
-        std::snprintf(tru, sizeof tru, "%.2f,%.2f,%.1f", r.in.truth.pose.x_in, r.in.truth.pose.y_in,
-                      r.in.truth.pose.heading_deg);
-        std::printf("%5d %10u %8.1f %8.1f %-8s %24s %24s %7s\n", r.in.index, r.cycles,
-                    r.cycles ? kSrv1Hz / r.cycles : 0.0, r.cycles ? kBf537MaxHz / r.cycles : 0.0,
-                    r.out.has_decision ? drive_name(r.out.decision) : "-", est, tru,
-                    r.in.truth.blocked ? "yes" : "no");
-      }
-    }
-    std::printf("%s (%s%s), %zu frames:\n", def->name.c_str(), opts.impl.c_str(),
-                opts.closed_loop ? ", closed loop" : "", run.frames.size());
-    for (const auto &l : pipeline_summary(*def, run)) std::printf("  %s\n", l.c_str());
-    if (!csv.empty()) {
-      std::string c = pipeline_csv(run);
-      write_file_atomic(csv, c.data(), c.size());
-    }
-    if (!svg.empty()) write_svgs(svg, def->name, run, dir ? &dir->arena : &gen->arena());
-    return run.mismatches.empty() ? 0 : 1;
-  } catch (const InputError &e) {
-    std::fprintf(stderr, "bfbench pipeline: %s\n", sim::printable(e.what(), 2000).c_str());
-    return 2;
-  } catch (const sim::SetupError &e) {
-    // A simulator or firmware that cannot run is a set-up problem, exit 2 as in every command;
-    // 1 is kept for decisions that differ.
-    std::fprintf(stderr, "bfbench pipeline: %s\n", sim::printable(e.what(), 2000).c_str());
-    return 2;
-  }
+  return run_command("pipeline", [&] { return pipeline_main(argc, argv); });
 }
 
 }  // namespace bvb

@@ -5,6 +5,7 @@
 
 #include "io.h"
 #include "pipe_common.h"
+#include "names.h"
 
 namespace bvb {
 namespace {
@@ -163,7 +164,7 @@ CheckCall bench_call(const std::string &, int w, int h, Rng &) {
   Params prm;
   auto calls = pipe::host_sequence(kFlowAvoid, pipe::bench_frames(w, h), prm, kState);
   CheckCall c = std::move(calls[1]);
-  c.case_name = std::to_string(w) + "x" + std::to_string(h);
+  c.case_name = size_name(w, h);
   return c;
 }
 

@@ -1,6 +1,7 @@
 #include "pipelines/heldout.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -15,6 +16,7 @@
 
 #include "extra_commands.h"
 #include "io.h"
+#include "options.h"
 #include "pipeline/runner.h"
 #include "pipelines/odometry.h"
 #include "scene/heldout.h"
@@ -83,30 +85,6 @@ OdoVerdict odometry_verdict(const std::vector<OdoLoop> &loops, const HeldoutLimi
 
 namespace {
 
-const char *kHelp =
-    "usage: bfbench heldout [PIPELINE...] [--seed N] [--runs N] [--frames N] [--run K]\n"
-    "                       [--impl host|c|asm] [--compare-host] [--param K=V]... [--size WxH]\n"
-    "                       [--ss N] [--save DIR] [--builds-only] [--quiet]\n\n"
-    "Judges the pipelines (seg_avoid, flow_avoid, odometry; all three by default) on scenes\n"
-    "drawn afresh from a seed: arenas (room, obstacles, floor colour, light), floor texture\n"
-    "seeds, start poses and, for the odometry, closed polygons of 3 to 8 sides and 12 to 36 in\n"
-    "legs. The seed is --seed N, else $BVB_HELDOUT_SEED, else new each run (time and\n"
-    "random_device); it is printed with the command that replays the run.\n"
-    "  seg_avoid, flow_avoid: --runs arenas (default 8) of --frames closed-loop frames (500);\n"
-    "      passes at most the limit of collisions (refused steps) per 1,000 frames, and at least\n"
-    "      a quarter of the frames forward.\n"
-    "  odometry: --runs polygons (default 10), vision alone unless --param fuse=1; passes when\n"
-    "      the 90th percentiles (nearest rank) of the final heading error and the final position\n"
-    "      error per 100 in driven are within their limits.\n"
-    "--frames also cuts each odometry loop, with --builds-only only. --run K runs only scene K\n"
-    "(0-based) of each pipeline; --save DIR writes each scene's arena file there and prints\n"
-    "the bfbench pipeline command that replays it. --impl is host by\n"
-    "default (every build computes the same frames: --compare-host checks it). --builds-only\n"
-    "(implies --compare-host) judges only that: a few scenes on the simulator say little about a\n"
-    "rate, the host run's many do, and equal frames make them the Blackfin's. --size and --ss\n"
-    "(supersampling, default 2) are the scene's. Exit status 0 all within the limits, 1 a\n"
-    "pipeline outside them (or builds that differ), 2 bad usage.\n";
-
 struct Options {
   std::vector<std::string> pipelines;
   uint64_t seed = 0;
@@ -114,40 +92,24 @@ struct Options {
   std::string impl = "host";
   bool compare_host = false, quiet = false, builds_only = false;
   std::vector<std::string> params;
-  std::string size = "160x120", save_dir;
+  Size size{160, 120};
+  std::string save_dir;
   int ss = 2;
 };
 
-std::string take(std::vector<std::string> &a, const std::string &name) {
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (a[i] != name) continue;
-    if (i + 1 >= a.size()) throw InputError(name + " needs a value");
-    std::string v = a[i + 1];
-    a.erase(a.begin() + long(i), a.begin() + long(i) + 2);
-    return v;
-  }
-  return "";
-}
-
-bool flag(std::vector<std::string> &a, const std::string &name) {
-  auto it = std::find(a.begin(), a.end(), name);
-  if (it == a.end()) return false;
-  a.erase(it);
-  return true;
-}
-
-long long whole(const std::string &s, const std::string &what, long long lo, long long hi) {
-  char *end = nullptr;
-  errno = 0;
-  const long long v = std::strtoll(s.c_str(), &end, 10);
-  if (s.empty() || *end || errno == ERANGE || v < lo || v > hi)
-    throw InputError(what + " wants a whole number " + std::to_string(lo) + ".." + std::to_string(hi) + ", not '" +
-                     s + "'");
-  return v;
-}
-
 constexpr long long kMaxSeed = 999999999999999999ll;
 constexpr int kAvoidScenes = 8, kOdometryLoops = 10;
+
+// $BVB_HELDOUT_SEED, read as --seed would be.
+uint64_t env_seed(const char *text) {
+  char *end = nullptr;
+  errno = 0;
+  const long long v = std::strtoll(text, &end, 10);
+  if (!std::isdigit(uint8_t(text[0])) || *end || errno == ERANGE || v > kMaxSeed)
+    throw UsageError(std::string("BVB_HELDOUT_SEED wants an integer in 0..") + std::to_string(kMaxSeed) + ", got '" +
+                     text + "'");
+  return uint64_t(v);
+}
 
 uint64_t fresh_seed() {
   std::random_device rd;
@@ -167,7 +129,7 @@ std::string replay_command(const Options &o, uint64_t seed, int only_run) {
   if (o.builds_only) s += " --builds-only";
   else if (o.compare_host) s += " --compare-host";
   for (const auto &p : o.params) s += " --param " + p;
-  if (o.size != "160x120") s += " --size " + o.size;
+  if (size_name(o.size) != "160x120") s += " --size " + size_name(o.size);
   if (o.ss != 2) s += " --ss " + std::to_string(o.ss);
   return s;
 }
@@ -203,16 +165,8 @@ void save_scene(const Context &c, const std::string &pipeline, const HeldoutScen
   SceneSpec spec = s.spec;
   spec.arena = file;
   // The keys that differ from a default spec's (format_scene_spec lists every key in order).
-  auto split = [](const std::string &t) {
-    std::vector<std::string> out;
-    for (size_t a = 0, b; a <= t.size(); a = b + 1) {
-      b = t.find(',', a);
-      if (b == std::string::npos) b = t.size();
-      out.push_back(t.substr(a, b - a));
-    }
-    return out;
-  };
-  const std::vector<std::string> mine = split(format_scene_spec(spec)), plain = split(format_scene_spec(SceneSpec{}));
+  const std::vector<std::string> mine = split_list(format_scene_spec(spec)),
+                                 plain = split_list(format_scene_spec(SceneSpec{}));
   std::string keys;
   for (size_t i = 0; i < mine.size(); ++i)
     if (i >= plain.size() || mine[i] != plain[i]) keys += (keys.empty() ? "" : ",") + mine[i];
@@ -296,89 +250,96 @@ bool judge_odometry(const Context &c) {
   return pass;
 }
 
+int heldout_main(int argc, char **argv) {
+  Options o;
+  long long seed = 0;
+  const HeldoutLimits l = heldout_limits();
+  char limits[256];
+  std::snprintf(limits, sizeof limits,
+                "limits: seg_avoid %.2f and flow_avoid %.2f collisions per 1,000 frames; odometry p90 %.2f deg and "
+                "%.2f in per 100 in driven",
+                l.seg_collisions_per_1000, l.flow_collisions_per_1000, l.odo_heading_p90_per_100in,
+                l.odo_position_p90_per_100in);
+  CommandLine cl("heldout");
+  cl.about("Judges the pipelines (seg_avoid, flow_avoid, odometry; all three by default) on scenes\n"
+           "drawn afresh from a seed: arenas (room, obstacles, floor colour, light), floor texture\n"
+           "seeds, start poses and, for the odometry, closed polygons of 3 to 8 sides and 12 to 36 in\n"
+           "legs. The seed is --seed N, else $BVB_HELDOUT_SEED, else new each run (time and\n"
+           "random_device); it is printed with the command that replays the run.\n"
+           "  seg_avoid, flow_avoid: --runs arenas (default 8) of --frames closed-loop frames (500);\n"
+           "      passes at most the limit of collisions (refused steps) per 1,000 frames, and at least\n"
+           "      a quarter of the frames forward.\n"
+           "  odometry: --runs polygons (default 10), vision alone unless --param fuse=1; passes when\n"
+           "      the 90th percentiles (nearest rank) of the final heading error and the final position\n"
+           "      error per 100 in driven are within their limits.\n"
+           "--frames also cuts each odometry loop, with --builds-only only. --impl is host by default\n"
+           "(every build computes the same frames: --compare-host checks it). --builds-only (implies\n"
+           "--compare-host) judges only that: a few scenes on the simulator say little about a rate,\n"
+           "the host run's many do, and equal frames make them the Blackfin's.")
+      .operands("PIPELINE", &o.pipelines, 0, 100, "(seg_avoid, flow_avoid or odometry)")
+      .integer("--seed", "N", 0, kMaxSeed, &seed, "the seed the scenes are drawn from")
+      .integer("--runs", "N", 1, 10000, &o.runs, "scenes per pipeline (default 8 arenas, 10 polygons)")
+      .integer("--frames", "N", 1, 100000, &o.frames, "closed-loop frames per arena (default 500)")
+      .integer("--run", "K", 0, 9999, &o.only_run, "only scene K (0-based) of each pipeline")
+      .text("--impl", "host|c|asm", &o.impl, "the build (default host)")
+      .flag("--compare-host", &o.compare_host, "every frame of a Blackfin build compared with the host build's")
+      .texts("--param", "K=V", &o.params, "a pipeline parameter (with exactly one PIPELINE)")
+      .size("--size", &o.size, "the scenes' frame size (default 160x120)")
+      .integer("--ss", "N", 1, 8, &o.ss, "the scenes' supersampling (default 2)")
+      .text("--save", "DIR", &o.save_dir,
+            "write each scene's arena file there and print the bfbench pipeline command that replays it")
+      .flag("--builds-only", &o.builds_only, "judge only that the builds agree (implies --compare-host)")
+      .flag("--quiet", &o.quiet, "the verdicts only, not a line per scene")
+      .tail(limits)
+      .exit_status("Exit status 0 all within the limits, 1 a pipeline outside them (or builds that differ), "
+                   "2 bad usage, bad input or a set-up that cannot run.");
+  if (!cl.parse(argc, argv)) return kExitOk;
+  o.compare_host = o.compare_host || o.builds_only;
+  if (o.impl != "host") parse_impl(o.impl);
+  if (o.save_dir.find(',') != std::string::npos) throw UsageError("--save: a directory without commas, please (it goes into a scene spec)");
+  if (o.pipelines.empty()) o.pipelines = {"seg_avoid", "flow_avoid", "odometry"};
+  for (const auto &p : o.pipelines)
+    if (p != "seg_avoid" && p != "flow_avoid" && p != "odometry")
+      throw UsageError("unknown pipeline '" + p + "' (seg_avoid, flow_avoid or odometry)");
+  if (o.frames && !o.builds_only && std::find(o.pipelines.begin(), o.pipelines.end(), "odometry") != o.pipelines.end())
+    throw UsageError("--frames would cut the odometry's loops, which are judged whole: give it with --builds-only, "
+                     "or for seg_avoid and flow_avoid alone");
+  if (o.builds_only && o.impl == "host") throw UsageError("--builds-only compares a Blackfin build: give --impl c or asm");
+  if (!o.params.empty() && o.pipelines.size() != 1) throw UsageError("--param needs exactly one PIPELINE");
+  if (o.only_run >= 0 && o.only_run >= scene_count(o, o.pipelines[0] == "odometry" ? kOdometryLoops : kAvoidScenes))
+    throw UsageError("--run " + std::to_string(o.only_run) + " is past the last scene");
+
+  uint64_t the_seed;
+  const char *env = std::getenv("BVB_HELDOUT_SEED");
+  if (cl.given("--seed")) the_seed = uint64_t(seed);
+  else if (env && *env) the_seed = env_seed(env);
+  else the_seed = fresh_seed();
+  // The scenes' size and rendering, checked as a scene spec would be.
+  SceneSpec base = parse_scene_spec("size=" + size_name(o.size) + ",ss=" + std::to_string(o.ss) + ",uyvy=0,flow=0");
+
+  std::unique_ptr<Target> target;
+  if (o.impl != "host" || o.compare_host) target = std::make_unique<Target>(product_firmware(), default_simulator());
+  std::printf("held-out seed %llu (%s)\n", static_cast<unsigned long long>(the_seed),
+              cl.given("--seed") ? "--seed" : env && *env ? "BVB_HELDOUT_SEED" : "drawn for this run");
+  std::printf("replay: %s\n", replay_command(o, the_seed, o.only_run).c_str());
+  std::fflush(stdout);
+  Context c{o, the_seed, target.get(), base};
+  const HeldoutLimits lim = heldout_limits();
+  bool pass = true;
+  for (const auto &p : o.pipelines) {
+    if (p == "seg_avoid") pass = judge_avoid(c, p, lim.seg_collisions_per_1000) && pass;
+    if (p == "flow_avoid") pass = judge_avoid(c, p, lim.flow_collisions_per_1000) && pass;
+    if (p == "odometry") pass = judge_odometry(c) && pass;
+    std::fflush(stdout);
+  }
+  if (!pass) std::printf("replay: %s\n", replay_command(o, the_seed, o.only_run).c_str());
+  return pass ? kExitOk : kExitFailed;
+}
+
 }  // namespace
 
 int heldout_command(int argc, char **argv) {
-  std::vector<std::string> a(argv + 1, argv + argc);
-  if (flag(a, "--help") || flag(a, "-h")) {
-    std::fputs(kHelp, stdout);
-    const HeldoutLimits l = heldout_limits();
-    std::printf("\nlimits: seg_avoid %.2f and flow_avoid %.2f collisions per 1,000 frames; odometry p90 %.2f deg and "
-                "%.2f in per 100 in driven\n",
-                l.seg_collisions_per_1000, l.flow_collisions_per_1000, l.odo_heading_p90_per_100in,
-                l.odo_position_p90_per_100in);
-    return 0;
-  }
-  try {
-    Options o;
-    const std::string seed = take(a, "--seed"), runs = take(a, "--runs"), frames = take(a, "--frames"),
-                      run = take(a, "--run"), impl = take(a, "--impl"), size = take(a, "--size"), ss = take(a, "--ss");
-    o.save_dir = take(a, "--save");
-    o.builds_only = flag(a, "--builds-only");
-    o.compare_host = flag(a, "--compare-host") || o.builds_only;
-    o.quiet = flag(a, "--quiet");
-    for (std::string p; !(p = take(a, "--param")).empty();) o.params.push_back(p);
-    if (!runs.empty()) o.runs = int(whole(runs, "--runs", 1, 10000));
-    if (!frames.empty()) o.frames = int(whole(frames, "--frames", 1, 100000));
-    if (!run.empty()) o.only_run = int(whole(run, "--run", 0, 9999));
-    if (!impl.empty()) o.impl = impl;
-    if (o.impl != "host") parse_impl(o.impl);
-    if (!size.empty()) o.size = size;
-    if (!ss.empty()) o.ss = int(whole(ss, "--ss", 1, 8));
-    if (o.save_dir.find(',') != std::string::npos) throw InputError("--save: a directory without commas, please (it goes into a scene spec)");
-    for (const auto &s : a)
-      if (s.size() > 1 && s[0] == '-') throw InputError("unknown option " + s);
-    o.pipelines = a;
-    if (o.pipelines.empty()) o.pipelines = {"seg_avoid", "flow_avoid", "odometry"};
-    for (const auto &p : o.pipelines)
-      if (p != "seg_avoid" && p != "flow_avoid" && p != "odometry")
-        throw InputError("unknown pipeline '" + p + "' (seg_avoid, flow_avoid or odometry)");
-    if (o.frames && !o.builds_only && std::find(o.pipelines.begin(), o.pipelines.end(), "odometry") != o.pipelines.end())
-      throw InputError("--frames would cut the odometry's loops, which are judged whole: give it with --builds-only, "
-                       "or for seg_avoid and flow_avoid alone");
-    if (o.builds_only && o.impl == "host") throw InputError("--builds-only compares a Blackfin build: give --impl c or asm");
-    if (!o.params.empty() && o.pipelines.size() != 1) throw InputError("--param needs exactly one PIPELINE");
-    if (o.only_run >= 0 && o.only_run >= scene_count(o, o.pipelines[0] == "odometry" ? kOdometryLoops : kAvoidScenes))
-      throw InputError("--run " + std::to_string(o.only_run) + " is past the last scene");
-
-    uint64_t the_seed;
-    const char *env = std::getenv("BVB_HELDOUT_SEED");
-    if (!seed.empty()) the_seed = uint64_t(whole(seed, "--seed", 0, kMaxSeed));
-    else if (env && *env) the_seed = uint64_t(whole(env, "BVB_HELDOUT_SEED", 0, kMaxSeed));
-    else the_seed = fresh_seed();
-    // The scenes' size and rendering, checked as a scene spec would be.
-    SceneSpec base = parse_scene_spec("size=" + o.size + ",ss=" + std::to_string(o.ss) + ",uyvy=0,flow=0");
-
-    std::unique_ptr<Target> target;
-    if (o.impl != "host" || o.compare_host) {
-      try {
-        target = std::make_unique<Target>(product_firmware(), default_simulator());
-      } catch (const sim::SetupError &e) {
-        throw InputError(e.what());
-      }
-    }
-    std::printf("held-out seed %llu (%s)\n", static_cast<unsigned long long>(the_seed),
-                !seed.empty() ? "--seed" : env && *env ? "BVB_HELDOUT_SEED" : "drawn for this run");
-    std::printf("replay: %s\n", replay_command(o, the_seed, o.only_run).c_str());
-    std::fflush(stdout);
-    Context c{o, the_seed, target.get(), base};
-    const HeldoutLimits lim = heldout_limits();
-    bool pass = true;
-    for (const auto &p : o.pipelines) {
-      if (p == "seg_avoid") pass = judge_avoid(c, p, lim.seg_collisions_per_1000) && pass;
-      if (p == "flow_avoid") pass = judge_avoid(c, p, lim.flow_collisions_per_1000) && pass;
-      if (p == "odometry") pass = judge_odometry(c) && pass;
-      std::fflush(stdout);
-    }
-    if (!pass) std::printf("replay: %s\n", replay_command(o, the_seed, o.only_run).c_str());
-    return pass ? 0 : 1;
-  } catch (const InputError &e) {
-    std::fprintf(stderr, "bfbench heldout: %s\n", sim::printable(e.what(), 2000).c_str());
-    return 2;
-  } catch (const sim::SetupError &e) {
-    std::fprintf(stderr, "bfbench heldout: %s\n", sim::printable(e.what(), 2000).c_str());
-    return 2;
-  }
+  return run_command("heldout", [&] { return heldout_main(argc, argv); });
 }
 
 }  // namespace bvb

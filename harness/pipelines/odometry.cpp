@@ -23,6 +23,7 @@
 #include "patterns.h"
 #include "scene/scene_io.h"
 #include "formats.h"
+#include "names.h"
 
 namespace bvb {
 
@@ -113,7 +114,7 @@ CheckCall odometry_call(const Image &grey, int stride, const bvb_pipe_frame &inf
   for (int y = 0; y < h; ++y) std::memcpy(&frame[size_t(y) * stride], &grey.data[size_t(y) * w], size_t(w));
   const size_t sbytes = bvb_pipe_odometry_state_bytes(w, h, stride, &p);
   const size_t xbytes = bvb_pipe_odometry_work_bytes(w, h, stride, &p);
-  if (sbytes == 0) throw InputError("odometry: parameters out of range for " + std::to_string(w) + "x" + std::to_string(h));
+  if (sbytes == 0) throw InputError("odometry: parameters out of range for " + size_name(w, h));
   if (state.empty()) state.assign(sbytes, 0);
   CheckCall c;
   c.kernel = "pipe_odometry";
@@ -357,7 +358,7 @@ CheckCall bench_call(const std::string &, int w, int h, Rng &) {
     fi.index = f;
     fi.truth = frames[size_t(f)].truth;
     const bvb_pipe_frame info = pipe::frame_info(fi, 0);
-    c = odometry_call(frames[size_t(f)].grey, w, info, p, state, false, std::to_string(w) + "x" + std::to_string(h));
+    c = odometry_call(frames[size_t(f)].grey, w, info, p, state, false, size_name(w, h));
     if (f == 0) {
       std::vector<std::vector<uint8_t>> bufs;
       for (const auto &b : c.bufs) bufs.push_back(b.data);
@@ -403,7 +404,7 @@ RunPlan plan_run(RunRequest &req) {
     write_text_output(path, s);
   };
   plan.kind = OutputKind::Text;
-  plan.summary = std::to_string(a.width) + "x" + std::to_string(a.height) + ", the motion between two frames";
+  plan.summary = size_name(a.width, a.height) + ", the motion between two frames";
   return plan;
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "pipe_common.h"
+#include "names.h"
 
 namespace bvb {
 namespace {
@@ -139,7 +140,7 @@ CheckCall bench_call(const std::string &, int w, int h, Rng &) {
   Params prm;
   auto calls = pipe::host_sequence(kSegAvoid, pipe::bench_frames(w, h), prm, kState);
   CheckCall c = std::move(calls[1]);
-  c.case_name = std::to_string(w) + "x" + std::to_string(h);
+  c.case_name = size_name(w, h);
   return c;
 }
 

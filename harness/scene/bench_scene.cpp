@@ -9,12 +9,13 @@
 
 #include "io.h"
 #include "sha256.h"
+#include "names.h"
 
 namespace bvb {
 
 std::string bench_scene_dir(int w, int h) {
   if (!((w == 160 && h == 120) || (w == 320 && h == 240))) return "";
-  return std::string(BVB_SOURCE_DIR) + "/frames/scenes/bench_boxes_" + std::to_string(w) + "x" + std::to_string(h);
+  return std::string(BVB_SOURCE_DIR) + "/frames/scenes/bench_boxes_" + size_name(w, h);
 }
 
 void verify_sha256sums(const std::string &dir, const std::vector<std::string> &required) {

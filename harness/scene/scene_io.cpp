@@ -15,6 +15,7 @@
 
 #include "io.h"
 #include "rng.h"
+#include "names.h"
 
 namespace bvb {
 
@@ -129,7 +130,7 @@ const std::vector<KeyDef> &spec_keys() {
          s.width = int(parse_int("size", v.substr(0, x), 2, kMaxFrameDim));
          s.height = int(parse_int("size", v.substr(x + 1), 2, kMaxFrameDim));
        },
-       [](const SceneSpec &s) { return std::to_string(s.width) + "x" + std::to_string(s.height); }},
+       [](const SceneSpec &s) { return size_name(s.width, s.height); }},
       {"frames", "1.." + std::to_string(kMaxFrames) + " or auto",
        [](SceneSpec &s, const std::string &v) {
          s.frames = v == "auto" ? 0 : int(parse_int("frames", v, 1, kMaxFrames));
@@ -783,8 +784,7 @@ Image SceneData::grey(int k) const {
   if (k < 0 || k >= frames) throw InputError(dir + ": no frame " + std::to_string(k));
   Image g = read_pnm(file("frame", k, "pgm"));
   if (g.width != camera.width || g.height != camera.height || g.channels != 1)
-    throw InputError(file("frame", k, "pgm") + ": not a " + std::to_string(camera.width) + "x" +
-                     std::to_string(camera.height) + " grey image");
+    throw InputError(file("frame", k, "pgm") + ": not a " + size_name(camera.width, camera.height) + " grey image");
   return g;
 }
 
@@ -797,8 +797,7 @@ Image SceneData::rgb(int k) const {
   if (!has_rgb || k < 0 || k >= frames) throw InputError(dir + ": no RGB frame " + std::to_string(k));
   Image g = read_pnm(file("frame", k, "ppm"));
   if (g.width != camera.width || g.height != camera.height || g.channels != 3)
-    throw InputError(file("frame", k, "ppm") + ": not a " + std::to_string(camera.width) + "x" +
-                     std::to_string(camera.height) + " RGB image");
+    throw InputError(file("frame", k, "ppm") + ": not a " + size_name(camera.width, camera.height) + " RGB image");
   return g;
 }
 

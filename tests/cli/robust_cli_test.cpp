@@ -17,37 +17,15 @@
 #include <sstream>
 #include <string>
 
+#include "bfbench_run.h"
 #include "io.h"
 #include "tempdir.h"
 
 namespace bvb {
 namespace {
 
-struct CliRun {
-  int status;  // exit status, or 128 + signal as a shell reports it
-  std::string out, err;
-};
-
 // Each test its own directory (tempdir.h): the files below have fixed names.
 std::string dir() { return test_dir(); }
-
-std::string slurp(const std::string &p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-CliRun bfbench(const std::string &args, const std::string &env = "") {
-  // Per process: ctest runs the tests of this file in parallel.
-  const std::string id = std::to_string(getpid());
-  const std::string o = dir() + "rcli." + id + ".out", e = dir() + "rcli." + id + ".err";
-  const std::string cmd = env + " " + BFBENCH_EXE + " " + args + " >" + o + " 2>" + e;
-  int rc = std::system(cmd.c_str());
-  int status = WIFEXITED(rc) ? WEXITSTATUS(rc) : WIFSIGNALED(rc) ? 128 + WTERMSIG(rc) : -1;
-  return {status, slurp(o), slurp(e)};
-}
-
 
 Image frame(int w, int h, int seed) {
   Image img(w, h);

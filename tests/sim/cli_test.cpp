@@ -16,6 +16,7 @@
 #include <string>
 
 #include "bvb/add_sat.h"
+#include "bfbench_run.h"
 #include "io.h"
 #include "json.h"
 #include "tempdir.h"
@@ -23,28 +24,8 @@
 namespace bvb {
 namespace {
 
-struct CliRun {
-  int status;
-  std::string out, err;
-};
-
 // Each test its own directory (tempdir.h): the files below have fixed names.
 std::string dir() { return test_dir(); }
-
-CliRun bfbench(const std::string &args, const std::string &env = "") {
-  // Per process: ctest runs this file's tests in parallel.
-  const std::string id = std::to_string(getpid());
-  const std::string o = dir() + "cli." + id + ".out", e = dir() + "cli." + id + ".err";
-  const std::string cmd = env + " " + BFBENCH_EXE + " " + args + " >" + o + " 2>" + e;
-  int rc = std::system(cmd.c_str());
-  auto slurp = [](const std::string &p) {
-    std::ifstream f(p);
-    std::stringstream s;
-    s << f.rdbuf();
-    return s.str();
-  };
-  return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, slurp(o), slurp(e)};
-}
 
 bool exists(const std::string &p) {
   struct stat st;
