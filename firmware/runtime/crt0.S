@@ -157,8 +157,10 @@ __start:
 
 /* Exception (EVT3). Uses no stack: the kernel may have left SP anywhere. Inside a kernel call:
  * record the fault against the call and resume the monitor at _bvb_call_abandon. Elsewhere it is
- * the firmware's own fault: record it in the window header for the host and stop. */
-	.section .l1.text, "ax"
+ * the firmware's own fault: record it in the window header for the host and stop.
+ * The handlers run from SDRAM (cached, under the locked CPLBs above, so their fetches never
+ * fault): they are never timed, and L1 instruction SRAM is kept for the kernels. */
+	.text
 	.align 4
 	.global _bvb_exception
 	.type _bvb_exception, STT_FUNC
