@@ -73,8 +73,8 @@
  * its window's v (a few ops from running sums), a square root and a division (on the order
  * of one cycle a bit each with DIVQ and a two-op root step, some 50 a score), so about 120
  * cycles a score is the bound this method could approach; the step there is a scoring path
- * of its own (running window sums, DIVQ, no calls a score), for which L1 code memory has no
- * room today (48 KB, 8 bytes free on this tree). It reads its one point through the cache:
+ * of its own (running window sums, DIVQ, no calls a score), for which L1 code memory had no
+ * room (48 KB; the passes of radii 1 to 4 now run from SDRAM, which frees 2.7 KB). It reads its one point through the cache:
  * memory DMA would wait ~3,500 cycles for it against ~2,300 of line fills at 160x120 (~15,000 at
  * 320x240: the matcher's DMA path, _ncc_dlayout/_ncc_dstart, would save ~11,000 there, at
  * some 60 bytes of code).
@@ -1690,10 +1690,15 @@ _ncc_mac\r:
 	rts;
 	.endm
 
+	/* The passes of radii 1 to 4 (2.7 KB) run from SDRAM through the instruction cache: the
+	 * robot and the benches use radius 5, and L1 instruction SRAM is full with the kernels'
+	 * hot code. Their first call in a run pays the cache's line fills. */
+	.text
 	MACPASS 1
 	MACPASS 2
 	MACPASS 3
 	MACPASS 4
+	.section .l1.text, "ax"
 	MACPASS 5
 
 	.align 4

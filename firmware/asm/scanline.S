@@ -72,7 +72,7 @@
  *     over their SAA loops. Toward the bound: a zero-padded copy of p2 turns the odd bytes
  *     into one more SAA and a running correction of p1's bytes, and the lanes' sum into one
  *     instruction (R = A1.L + A1.H, R = A0.L + A0.H, exact while w <= 512); L1 code memory
- *     (48 KB, 8 bytes left on this tree) has no room for it beside the present path today. */
+ *     (48 KB, nearly full) is the constraint on a second path beside the present one. */
 
 	.section .rodata
 	.align 4
