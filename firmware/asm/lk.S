@@ -83,6 +83,37 @@ _bvb_lk_track_asm:
 	rts;
 	.size _bvb_lk_track_asm, . - _bvb_lk_track_asm
 
+/* ---- bvb_lk_pyramid_streamed_asm: the stream's driver (firmware/c/lk.c) with the level
+ * routine below. The driver is compiled C, whose convention leaves a hardware loop counting
+ * when it leaves one early; this entry clears both counters so that no caller's loop end
+ * fires on a stale count. Once per call: in SDRAM. */
+	.section .text
+	.align 4
+	.global _bvb_lk_pyramid_streamed_asm
+	.type _bvb_lk_pyramid_streamed_asm, STT_FUNC
+_bvb_lk_pyramid_streamed_asm:
+	link 32;
+	p0 = fp;
+	p1 = sp;
+	r3 = [p0 + 20];          /* arguments 4 .. 7 of the caller, at its SP + 12 .. SP + 24 */
+	[p1 + 12] = r3;
+	r3 = [p0 + 24];
+	[p1 + 16] = r3;
+	r3 = [p0 + 28];
+	[p1 + 20] = r3;
+	r3 = [p0 + 32];
+	[p1 + 24] = r3;
+	p2.l = _bvb_lk_pyramid_asm;
+	p2.h = _bvb_lk_pyramid_asm;
+	[p1 + 28] = p2;
+	call _bvb_lk_pyramid_stream_run;
+	r0 = 0;
+	lc0 = r0;
+	lc1 = r0;
+	unlink;
+	rts;
+	.size _bvb_lk_pyramid_streamed_asm, . - _bvb_lk_pyramid_streamed_asm
+
 	.section .rodata
 	.align 4
 _bvb_lk_asm_ops:
@@ -601,7 +632,21 @@ _bvb_lk_patch_asm:
  * Cycles (bfbench bench, levels 1 and 2 of a frame with stride = width): 12,364 at 160x120,
  * 33,604 at 320x240, 103,084 at 640x480 (2.06, 1.40, 1.07 per output pixel: the row tails and
  * set-up weigh on small levels); the C reference takes 12.1-12.3 (6.0x, 8.7x, 11.2x).
- * Lower bound: 0.75 issues per output pixel (BYTEOP2P: 2 outputs per issue, BYTEPACK: 4). */
+ * Lower bound: 0.75 issues per output pixel (BYTEOP2P: 2 outputs per issue, BYTEPACK: 4).
+ *
+ * The registry's lk_pyramid is bvb_lk_pyramid_streamed_asm (above): this routine over bands in
+ * L1, driven by bvb_lk_pyramid_stream_run (firmware/c/lk.c), which brings the frame's rows in
+ * and sends levels 1 to 3 out by memory DMA, one band ahead. Then the bus is the bound: the
+ * frame's 76,800 bytes in and the levels' 24,000 out at 0.5 byte per core cycle (bvb/dma.h),
+ * 201,600 cycles at 320x240, 8.4 per level byte (3 levels). Modelled (bfbench bench, frame
+ * and levels in SDRAM, scratch in L1 bank B): 58,854 at 160x120 (9.81 per level byte, 1.17x),
+ * 213,986 at 320x240 (8.92, 1.06x), 836,998 at 640x480 (8.72, 1.04x); before (the frame and
+ * the levels through the data cache): 120,753 / 507,715 / 1,930,121. Where the rest goes: the
+ * core waits for the bus for 69% of the call (bfbench profile); the compute, 1.38x its issue
+ * bound (the two rows' dual loads share a 4 KB sub-bank in the band buffer: 11k collision
+ * cycles), is hidden under it. The time over the bus's: each band's job start and
+ * descriptors (16 jobs of 2 to 4 transfers), the set-up before band 0's rows start, and the
+ * last band's compute and its levels' transfer after the last rows are in. */
 #define Y_IN    -4
 #define Y_INSTR -8
 #define Y_W     -12    /* input width */

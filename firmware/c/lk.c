@@ -37,6 +37,149 @@ void bvb_lk_pyramid_c(const uint8_t *src, int32_t width, int32_t height, int32_t
   }
 }
 
+void bvb_lk_pyramid_streamed_c(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
+                               int32_t levels, uint8_t *pyr, void *scratch) {
+  (void)scratch;
+  bvb_lk_pyramid_c(src, width, height, stride, levels, pyr);
+}
+
+#if defined(__bfin__)
+#include "bvb/dma.h"
+
+typedef char lk_job_bytes_check[BVB_LK_PYR_JOB_BYTES == BVB_DMA_JOB_BYTES ? 1 : -1];
+
+static int32_t lk_in_sdram(const void *p) { return (uintptr_t)p < 0x02000000u; }
+
+/* Slot *slot of a job for x: re-addressed when it was last prepared for the same shape (key),
+ * prepared again otherwise; what DMA refuses is copied by the core at once. */
+static void lk_add(uint8_t *job, int32_t *keys, int32_t *slot, const struct bvb_dma_xfer *x, int32_t key) {
+  if (keys[*slot] == key) {
+    bvb_dma_move(job, *slot, x);
+  } else if (bvb_dma_prepare(job, *slot, x) == 0) {
+    keys[*slot] = key;
+  } else {
+    const uint8_t *s = (const uint8_t *)x->src;
+    uint8_t *d = (uint8_t *)x->dst;
+    for (int32_t r = 0; r < x->rows; ++r, s += x->src_stride, d += x->dst_stride)
+      for (int32_t i = 0; i < x->width; ++i) d[i] = s[i];
+    keys[*slot] = -1;
+    return;
+  }
+  ++*slot;
+}
+
+/* Band k (B level-1 rows, 2 B frame rows) is made from its frame rows in L1 while the job built
+ * before it runs: band k-1's levels out to pyr, band k+1's frame rows in. The job is built in
+ * the other job area before the wait, so the stream idles only between the wait and the
+ * start. A DMA error redoes the whole pyramid in place. */
+void bvb_lk_pyramid_stream_run(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
+                               int32_t levels, uint8_t *pyr, void *scratch, bvb_lk_level_fn level) {
+  const int32_t w1 = width >> 1, h1 = height >> 1, B = BVB_LK_PYR_BAND(width);
+  const int32_t nl = levels - 1 < 3 ? levels - 1 : 3; /* levels made band by band */
+  const int32_t out_dma = lk_in_sdram(pyr);
+  if (levels < 2 || w1 == 0 || h1 == 0 || !lk_in_sdram(src) || lk_in_sdram(scratch) ||
+      !bvb_dma_reachable(scratch, BVB_LK_PYRAMID_SCRATCH_BYTES(width)) ||
+      !bvb_dma_reachable(src, (2 * h1 - 1) * stride + width) ||
+      (out_dma && !bvb_dma_reachable(pyr, (int32_t)bvb_lk_pyramid_bytes(width, height, nl + 1)))) {
+    level(src, width, height, stride, levels, pyr);
+    return;
+  }
+  int32_t lw[4], ls[4];
+  uint32_t off[4];
+  for (int32_t l = 1; l <= 3; ++l) {
+    lw[l] = width >> l;
+    ls[l] = BVB_LK_LEVEL_STRIDE(lw[l]);
+    off[l] = bvb_lk_level_offset(width, height, l);
+  }
+  const int32_t pin = BVB_LK_LEVEL_STRIDE(width);
+  uint8_t *m = (uint8_t *)scratch, *job[2], *in[2], *ob[2][4];
+  job[0] = m;
+  job[1] = m + BVB_LK_PYR_JOB_BYTES;
+  m += 2 * BVB_LK_PYR_JOB_BYTES;
+  for (int32_t par = 0; par < 2; ++par) {
+    in[par] = m;
+    m += 2 * B * pin;
+    for (int32_t l = 1; l <= 3; ++l) {
+      ob[par][l] = m;
+      m += (B >> (l - 1)) * ls[l];
+    }
+  }
+  int32_t keys[2][BVB_DMA_MAX_XFERS];
+  for (int32_t j = 0; j < 2; ++j)
+    for (int32_t s = 0; s < BVB_DMA_MAX_XFERS; ++s) keys[j][s] = -1;
+  struct bvb_dma_xfer x;
+  x.width = width;
+  x.src_stride = stride;
+  x.dst_stride = pin;
+
+  /* band 0's rows in, on job 1 (band k's job is built in job k & 1) */
+  x.src = src;
+  x.dst = in[0];
+  x.rows = 2 * (h1 < B ? h1 : B);
+  if (bvb_dma_prepare(job[1], 0, &x) != 0) {
+    level(src, width, height, stride, levels, pyr);
+    return;
+  }
+  bvb_dma_start(job[1], 1);
+  int32_t running = 1, failed = 0;
+  for (int32_t r = 0, k = 0; r < h1 + B; r += B, ++k) {
+    /* r: band k's first level-1 row; past the last band: its outputs alone */
+    const int32_t j = k & 1, n = h1 - r < B ? h1 - r : B;
+    int32_t slot = 0;
+    if (out_dma && r > 0) {
+      const int32_t rp = r - B, np = h1 - rp < B ? h1 - rp : B;
+      for (int32_t l = 1; l <= nl; ++l) {
+        const int32_t rows = np >> (l - 1);
+        if (rows == 0 || lw[l] == 0) continue;
+        x.src = ob[(k - 1) & 1][l];
+        x.src_stride = ls[l];
+        x.dst = pyr + off[l] + (uint32_t)((rp >> (l - 1)) * ls[l]);
+        x.dst_stride = ls[l];
+        x.width = lw[l];
+        x.rows = rows;
+        lk_add(job[j], keys[j], &slot, &x, rows * 8 + l);
+      }
+    }
+    if (n > 0 && r + B < h1) {
+      const int32_t rn = r + B, nn = h1 - rn < B ? h1 - rn : B;
+      x.src = src + 2 * rn * stride;
+      x.src_stride = stride;
+      x.dst = in[(k + 1) & 1];
+      x.dst_stride = pin;
+      x.width = width;
+      x.rows = 2 * nn;
+      lk_add(job[j], keys[j], &slot, &x, 2 * nn * 8);
+    }
+    if (running && bvb_dma_wait() != 0) failed = 1;
+    running = 0;
+    if (slot && !failed) {
+      bvb_dma_start(job[j], slot);
+      running = 1;
+    }
+    if (n > 0 && !failed) {
+      const uint8_t *a = in[k & 1];
+      int32_t wa = width, ha = 2 * n, sa = pin;
+      for (int32_t l = 1; l <= nl; ++l) {
+        uint8_t *d = out_dma ? ob[k & 1][l] : pyr + off[l] + (uint32_t)((r >> (l - 1)) * ls[l]);
+        level(a, wa, ha, sa, 2, d);
+        a = d;
+        wa = lw[l];
+        ha >>= 1;
+        sa = ls[l];
+      }
+    }
+  }
+  if (running && bvb_dma_wait() != 0) failed = 1;
+  if (failed) {
+    bvb_dma_reset();
+    level(src, width, height, stride, levels, pyr);
+    return;
+  }
+  /* level 4 from level 3 */
+  if (levels > 4) level(pyr + off[3], lw[3], height >> 3, ls[3], levels - 3, pyr + bvb_lk_level_offset(width, height, 4));
+}
+#endif
+
 /* ---- fixed-point helpers ---- */
 
 /* Bit length of v (0 for 0), v < 2^31 (every caller's). On the Blackfin one SIGNBITS (GCC's

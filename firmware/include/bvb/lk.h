@@ -60,7 +60,17 @@
  * aligned, any contents. width, height >= 1 and <= 16384; feature coordinates within
  * +-16384 pixels. bvb_lk_pyramid: 1 <= levels <= BVB_LK_MAX_LEVELS (a level of zero size is
  * empty); pyr 4-byte aligned; its assembly reads the frame by aligned words (up to 3 bytes
- * either side of a row). */
+ * either side of a row).
+ *
+ * STREAMED PYRAMID (bvb_lk_pyramid_streamed, the registry's lk_pyramid): the same levels, with
+ * scratch: BVB_LK_PYRAMID_SCRATCH_BYTES(width) bytes, 4-byte aligned, any contents. With the
+ * frame in SDRAM and the scratch in L1 where memory DMA reaches it, the assembly brings the
+ * frame's rows into the scratch by memory DMA, BVB_LK_PYR_BAND(width) level-1 rows' worth a
+ * band (twice as many frame rows), double-buffered, computes levels 1 to 3 of the band there
+ * and sends them to pyr by DMA (or writes them straight into pyr when pyr is not in SDRAM);
+ * level 4 (levels = 5) is made from level 3 afterwards. Elsewhere (the frame in L1, the
+ * scratch where DMA does not reach, no level to make) it is bvb_lk_pyramid_asm. The C
+ * reference is bvb_lk_pyramid_c (the scratch unused). */
 #ifndef BVB_LK_H
 #define BVB_LK_H
 
@@ -77,6 +87,19 @@
 #define BVB_LK_SCRATCH_BYTES 4096
 
 #define BVB_LK_LEVEL_STRIDE(w) (((w) + 3) & ~3)
+
+/* The streamed pyramid's scratch: two DMA jobs (bvb/dma.h's BVB_DMA_JOB_BYTES each) and, twice,
+ * a band of 2 B frame rows (rows of (w + 3) & ~3 bytes) and its B, B/2, B/4 rows of levels 1 to
+ * 3 (rows of their level strides), B = BVB_LK_PYR_BAND(w): 13,824 bytes at 160, 320 and 640
+ * wide. B is a multiple of 4, so a band's level-2 and level-3 rows are whole. */
+#define BVB_LK_PYR_BAND(w) ((w) <= 192 ? 16 : (w) <= 384 ? 8 : 4)
+#define BVB_LK_PYR_JOB_BYTES 112
+#define BVB_LK_PYRAMID_SCRATCH_BYTES(w)                                                        \
+  (2 * BVB_LK_PYR_JOB_BYTES +                                                                  \
+   2 * (2 * BVB_LK_PYR_BAND(w) * BVB_LK_LEVEL_STRIDE(w) +                                     \
+        BVB_LK_PYR_BAND(w) * BVB_LK_LEVEL_STRIDE((w) >> 1) +                                  \
+        (BVB_LK_PYR_BAND(w) >> 1) * BVB_LK_LEVEL_STRIDE((w) >> 2) +                           \
+        (BVB_LK_PYR_BAND(w) >> 2) * BVB_LK_LEVEL_STRIDE((w) >> 3)))
 
 /* The iteration block (int32 words) shared by the C and assembly iteration steps. */
 #define BVB_LK_IT_STRIDE 0
@@ -137,6 +160,17 @@ void bvb_lk_pyramid_c(const uint8_t *src, int32_t width, int32_t height, int32_t
                       int32_t levels, uint8_t *pyr);
 void bvb_lk_pyramid_asm(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
                         int32_t levels, uint8_t *pyr);
+
+void bvb_lk_pyramid_streamed_c(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
+                               int32_t levels, uint8_t *pyr, void *scratch);
+void bvb_lk_pyramid_streamed_asm(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
+                                 int32_t levels, uint8_t *pyr, void *scratch);
+/* The streamed pyramid's driver (Blackfin only: it runs the DMA), with `level` making the
+ * levels of a band (bvb_lk_pyramid_asm's signature). */
+typedef void (*bvb_lk_level_fn)(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
+                                int32_t levels, uint8_t *pyr);
+void bvb_lk_pyramid_stream_run(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
+                               int32_t levels, uint8_t *pyr, void *scratch, bvb_lk_level_fn level);
 
 void bvb_lk_track_c(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_t *next,
                     const uint8_t *next_pyr, int32_t width, int32_t height, int32_t stride,
