@@ -25,24 +25,38 @@
  * level; the rest is the C driver (the flat test and the inverse with its division).
  * Lower bound: 3.5 issues per window pixel and iteration (4 bilinear products: 2 dual-MAC
  * issues, half a vector subtract, 2 products for b: 1 issue), not counting the per-level work.
- * Modelled (--timing bf537, bfbench bench, frames and scratch in SDRAM): 607,794 at 160x120
- * (12.9 per window pixel and iteration against the bound's 3.5: 3.69x), 749,813 at 320x240
- * (15.9: 4.55x), 811,391 at 640x480 (17.2: 4.93x); the simulator's own count 483,731 /
- * 575,038 / 581,091 (before the driver's bit lengths by SIGNBITS: 617,443 / 761,874 /
- * 823,847; before the scratch layout below and the bit lengths by halving: 710,633 / 869,867
- * / 934,317).
- * Where the rest goes: the separable steps' own issues above (the horizontal pass's per-row
- * set-up, the solve's frame loads and stores, the template step, the C driver); under the
- * model the windows' level-0 rows of both frames through the data cache (a line fill per
- * 32 bytes the first time a window touches them; more at the larger sizes, where the
- * features spread over more lines), and the template step's dual loads of two Te rows
- * (one sub-bank). The iteration's dual accesses pair h with the template, h with the
- * differences and the gradients with the differences: bvb_lk_track_run puts the template
- * and the differences on one side of a 4 KB sub-bank boundary of the scratch and h and the
- * gradients on the other whenever the scratch spans one (firmware/c/lk.c), so they do not
- * collide; a caller with room to spare lets bvb_lk_scratch_place pick a start where it does
- * (the odometry: 28k collision cycles a frame at 160x120 before, where its fast buffer put the
- * scratch too near a boundary for the layout to split at it).
+ * Level copies. The windows' rows came through the data cache from SDRAM (a line fill per
+ * 32 bytes the first time a window touches them: 157k stall cycles of 749,689 at 320x240).
+ * Now the driver brings each level step's bytes (a feature at a level: the template's
+ * wx + 3 by wy + 3 of prev, and next's around the template position with 4 pixels of margin)
+ * into L1 in the scratch by memory DMA one step ahead, two small transfers a job
+ * (bvb_lk_fetch_dma in firmware/c/lk.c), and runs the steps on the copies; an iteration whose
+ * window leaves the copy (BVB_LK_REFETCH) has the rest of its level run on the level itself.
+ * The copies go in the scratch's room on the template's side of its 4 KB split; frames in
+ * L1, a scratch DMA cannot reach or one with no room (large windows) read in place, and so
+ * does a step that finds the DMA stream busy with a caller's job (the odometry's state copy).
+ * Modelled (--timing bf537, bfbench bench, frames and levels in SDRAM, the scratch in L1 bank B
+ * across a 4 KB boundary, as bvb_lk_scratch_place puts it): 598,261 at 160x120 (12.7 per
+ * window pixel and iteration against the bound's 3.5: 3.63x), 692,666 at 320x240 (14.7:
+ * 4.21x), 697,951 at 640x480 (14.8: 4.24x); the simulator's own count 571,887 / 670,773 /
+ * 676,816. Before the copies (the scratch in SDRAM): 607,794 / 749,689 / 811,391 (sim
+ * 483,731 / 575,038 / 581,091); before the driver's bit lengths by SIGNBITS: 617,443 /
+ * 761,874 / 823,847; before the scratch layout below and the bit lengths by halving: 710,633 /
+ * 869,867 / 934,317.
+ * Where the rest goes (bfbench profile lk_track, 320x240): the iteration step 433k (930
+ * iterations of 453 cycles against their 438 issues: the separable steps' own issues above,
+ * the horizontal pass's per-row set-up, the solve's frame loads and stores), the template
+ * step 93k (9k of it the dual loads of two Te rows in one sub-bank), the C driver 59k and
+ * its divisions and 64-bit products 27k (the flat test and the inverse), and the copies'
+ * cost on the core, some 80k (per level step: the blocks' addresses, the job's slots
+ * re-addressed, its start and wait). The iteration's dual accesses pair h with the
+ * template, h with the differences and the gradients with the differences: bvb_lk_track_run
+ * puts the template and the differences on one side of a 4 KB sub-bank boundary of the
+ * scratch and h and the gradients on the other whenever the scratch spans one
+ * (firmware/c/lk.c), so they do not collide; a caller with room to spare lets
+ * bvb_lk_scratch_place pick a start where it does (the odometry: 28k collision cycles a frame
+ * at 160x120 before, where its fast buffer put the scratch too near a boundary for the layout
+ * to split at it).
  * Working set: the window rows of two levels' images and under 4 KB of scratch (L1 on hardware). */
 #include "bvb/lk.h"
 
@@ -119,6 +133,8 @@ _bvb_lk_pyramid_streamed_asm:
 _bvb_lk_asm_ops:
 	.long _bvb_lk_patch_asm
 	.long _bvb_lk_iterate_asm
+	.long _bvb_lk_fetch_dma
+	.long _bvb_lk_fetch_wait_dma
 
 	.section .l1.text, "ax"
 	.align 4
@@ -131,12 +147,10 @@ _bvb_lk_asm_ops:
 #define I_H     -16    /* work: wy + 1 rows of h, wx + 1 int16 each */
 #define I_D     -20    /* the differences: after the template (tmpl + 2 wy (wx + 1) + 4) */
 #define I_STR   -24
-#define I_HX    -28
-#define I_HY    -32
+                       /* -28, -32: free */
 #define I_ROWB  -36    /* bytes per row of h: 2 (wx + 1) */
 #define I_NPAIR -40    /* pairs in the window: wy (wx + 1) / 2 */
-#define I_XMAX  -44    /* width - 2 - hx: the largest integer x for a window inside */
-#define I_YMAX  -48
+                       /* -44, -48: free */
 #define I_MA    -52    /* Mxy << 16 | Mxx */
 #define I_MB    -56    /* Myy << 16 | Mxy */
 #define I_S     -60
@@ -149,7 +163,12 @@ _bvb_lk_asm_ops:
 #define I_INNER -88    /* hx - 1: regular pairs of a row after the first */
 #define I_ROWS  -92    /* wy + 1 */
 #define I_IT    -96    /* iterations done */
-#define I_SIZE  96
+#define I_XLO   -100   /* the window's integer x and y bounds: inside the image and the bytes */
+#define I_XHI   -104   /* img holds (RX0 .. RX1, RY0 .. RY1) */
+#define I_YLO   -108
+#define I_YHI   -112
+#define I_ORG   -116   /* img - hy stride - hx: the window's first pixel is ORG + iy stride + ix */
+#define I_SIZE  116
 #define I_ARG_WORK  48
 #define I_ARG_BLOCK 52
 #define BLK(n) ((n) * 4)
@@ -168,9 +187,7 @@ _bvb_lk_iterate_asm:
 	r1 = [p5 + BLK(BVB_LK_IT_STRIDE)];
 	[fp + I_STR] = r1;
 	r6 = [p5 + BLK(BVB_LK_IT_HX)];
-	[fp + I_HX] = r6;
 	r7 = [p5 + BLK(BVB_LK_IT_HY)];
-	[fp + I_HY] = r7;
 	r2 = r6 << 2;
 	r2 += 4;
 	[fp + I_ROWB] = r2;      /* 4 hx + 4 */
@@ -194,14 +211,39 @@ _bvb_lk_iterate_asm:
 	r2 = r6;
 	r2 += -1;
 	[fp + I_INNER] = r2;
+	/* the bounds the loop tests: those of the image (x <= width - 2 - hx, likewise y) and of
+	 * the bytes img holds at once (a window outside them is sorted out at .Lbounds, off the
+	 * loop's path) */
 	r0 = [p5 + BLK(BVB_LK_IT_WIDTH)];
 	r0 += -2;
 	r0 = r0 - r6;
-	[fp + I_XMAX] = r0;
+	r1 = [p5 + BLK(BVB_LK_IT_RX1)];
+	r1 = r1 - r6;
+	r1 += -1;
+	r0 = min (r0, r1);
+	[fp + I_XHI] = r0;
 	r0 = [p5 + BLK(BVB_LK_IT_HEIGHT)];
 	r0 += -2;
 	r0 = r0 - r7;
-	[fp + I_YMAX] = r0;
+	r1 = [p5 + BLK(BVB_LK_IT_RY1)];
+	r1 = r1 - r7;
+	r1 += -1;
+	r0 = min (r0, r1);
+	[fp + I_YHI] = r0;
+	r1 = [p5 + BLK(BVB_LK_IT_RX0)];
+	r1 = r1 + r6;
+	r0 = max (r1, r6);
+	[fp + I_XLO] = r0;
+	r1 = [p5 + BLK(BVB_LK_IT_RY0)];
+	r1 = r1 + r7;
+	r0 = max (r1, r7);
+	[fp + I_YLO] = r0;
+	r0 = [fp + I_STR];
+	r0 *= r7;
+	r0 = r0 + r6;
+	r1 = [fp + I_IMG];
+	r1 = r1 - r0;
+	[fp + I_ORG] = r1;
 	r0 = [p5 + BLK(BVB_LK_IT_MXX)];
 	r1 = [p5 + BLK(BVB_LK_IT_MXY)];
 	r2 = [p5 + BLK(BVB_LK_IT_MYY)];
@@ -239,24 +281,22 @@ _bvb_lk_iterate_asm:
 	r4 >>>= 9;
 	r5 = r4 >>> 7;           /* iy */
 	r4 = r4 & r3;            /* fy */
-	r6 = [fp + I_HX];
+	r6 = [fp + I_XLO];
 	cc = r2 < r6;
-	if cc jump .Lleft;
-	r7 = [fp + I_XMAX];
+	if cc jump .Lbounds;
+	r7 = [fp + I_XHI];
 	cc = r7 < r2;
-	if cc jump .Lleft;
-	r7 = [fp + I_HY];
+	if cc jump .Lbounds;
+	r7 = [fp + I_YLO];
 	cc = r5 < r7;
-	if cc jump .Lleft;
-	r1 = [fp + I_YMAX];
+	if cc jump .Lbounds;
+	r1 = [fp + I_YHI];
 	cc = r1 < r5;
-	if cc jump .Lleft;
-	r2 = r2 - r6;            /* ix - hx */
-	r5 = r5 - r7;            /* iy - hy */
+	if cc jump .Lbounds;
 	r1 = [fp + I_STR];
 	r5 *= r1;
 	r5 = r5 + r2;
-	r1 = [fp + I_IMG];
+	r1 = [fp + I_ORG];
 	r5 = r5 + r1;
 	p1 = r5;                 /* the window's first pixel */
 	r1 = 128 (x);
@@ -410,8 +450,27 @@ _bvb_lk_iterate_asm:
 .Lconverged:
 	r0 = BVB_LK_TRACKED;
 	jump .Lout;
-.Lleft:
+.Lbounds:
+	/* outside the image: left; inside it but outside the bytes img holds: the caller runs
+	 * the rest on the level itself */
 	r0 = BVB_LK_LEFT;
+	r6 = [p5 + BLK(BVB_LK_IT_HX)];
+	cc = r2 < r6;
+	if cc jump .Lout;
+	r7 = [p5 + BLK(BVB_LK_IT_WIDTH)];
+	r7 += -2;
+	r7 = r7 - r6;
+	cc = r7 < r2;
+	if cc jump .Lout;
+	r6 = [p5 + BLK(BVB_LK_IT_HY)];
+	cc = r5 < r6;
+	if cc jump .Lout;
+	r7 = [p5 + BLK(BVB_LK_IT_HEIGHT)];
+	r7 += -2;
+	r7 = r7 - r6;
+	cc = r7 < r5;
+	if cc jump .Lout;
+	r0 = BVB_LK_REFETCH;
 .Lout:
 	r1 = [fp + I_QX];
 	[p5 + BLK(BVB_LK_IT_QX)] = r1;

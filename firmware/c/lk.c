@@ -44,9 +44,19 @@ void bvb_lk_pyramid_streamed_c(const uint8_t *src, int32_t width, int32_t height
 }
 
 #if defined(__bfin__)
+#include <stddef.h>
+
 #include "bvb/dma.h"
 
 typedef char lk_job_bytes_check[BVB_LK_PYR_JOB_BYTES == BVB_DMA_JOB_BYTES ? 1 : -1];
+/* struct bvb_lk_copy begins with struct bvb_dma_xfer's fields */
+typedef char lk_copy_check[offsetof(struct bvb_lk_copy, rows) == offsetof(struct bvb_dma_xfer, rows) &&
+                                   offsetof(struct bvb_lk_copy, src_stride) == offsetof(struct bvb_dma_xfer, src_stride) &&
+                                   offsetof(struct bvb_lk_copy, dst) == offsetof(struct bvb_dma_xfer, dst) &&
+                                   offsetof(struct bvb_lk_copy, dst_stride) == offsetof(struct bvb_dma_xfer, dst_stride) &&
+                                   offsetof(struct bvb_lk_copy, width) == offsetof(struct bvb_dma_xfer, width)
+                               ? 1
+                               : -1];
 
 static int32_t lk_in_sdram(const void *p) { return (uintptr_t)p < 0x02000000u; }
 
@@ -178,6 +188,43 @@ void bvb_lk_pyramid_stream_run(const uint8_t *src, int32_t width, int32_t height
   /* level 4 from level 3 */
   if (levels > 4) level(pyr + off[3], lw[3], height >> 3, ls[3], levels - 3, pyr + bvb_lk_level_offset(width, height, 4));
 }
+
+/* The tracker's level copies by memory DMA (struct bvb_lk_ops): the blocks from SDRAM into L1
+ * where DMA reaches. The stream runs one job at a time, and a caller may have left one of its
+ * own running (the odometry's state copy runs while it tracks): a step whose copies would
+ * find the stream busy (DMA_RUN), or its last job failed (DMA_ERR, left for its owner to
+ * see), reads its windows where they are. After a job of the caller's that ended well the
+ * tracker's own jobs end the same way, so the caller's wait still returns 0. */
+#define LK_MDMA_D0_IRQ_STATUS ((volatile uint16_t *)0xFFC00F28)
+#define LK_DMA_ERR 0x2
+#define LK_DMA_RUN 0x8
+static int32_t lk_fetch_running;
+
+int32_t bvb_lk_fetch_dma(void *job, int32_t *keys, const struct bvb_lk_copy *c, int32_t n) {
+  int32_t mask = 0, slot = 0;
+  if (n == 0) return !lk_in_sdram(job) && bvb_dma_reachable(job, BVB_LK_SCRATCH_BYTES);
+  if (n < 0) return lk_in_sdram(job);
+  if (*LK_MDMA_D0_IRQ_STATUS & (LK_DMA_RUN | LK_DMA_ERR)) return 0;
+  for (int32_t i = 0; i < n; ++i) {
+    /* the destination is the scratch, which the probe found where DMA reaches */
+    if (c[i].rows <= 0 || c[i].width <= 0 || !lk_in_sdram(c[i].src)) continue;
+    lk_add((uint8_t *)job, keys, &slot, (const struct bvb_dma_xfer *)&c[i], c[i].key);
+    mask |= 1 << i;
+  }
+  lk_fetch_running = 0;
+  if (slot) {
+    bvb_dma_start(job, slot);
+    lk_fetch_running = 1;
+  }
+  return mask;
+}
+
+int32_t bvb_lk_fetch_wait_dma(void) {
+  int32_t r = 0;
+  if (lk_fetch_running && (r = bvb_dma_wait()) != 0) bvb_dma_reset();
+  lk_fetch_running = 0;
+  return r;
+}
 #endif
 
 /* ---- fixed-point helpers ---- */
@@ -289,6 +336,13 @@ int32_t bvb_lk_iterate_c(const uint8_t *img, const int16_t *tmpl, const int32_t 
       block[BVB_LK_IT_ITERS] = it - 1;
       return BVB_LK_LEFT;
     }
+    if (ix - hx < block[BVB_LK_IT_RX0] || ix + hx + 1 > block[BVB_LK_IT_RX1] || iy - hy < block[BVB_LK_IT_RY0] ||
+        iy + hy + 1 > block[BVB_LK_IT_RY1]) {
+      block[BVB_LK_IT_QX] = qx;
+      block[BVB_LK_IT_QY] = qy;
+      block[BVB_LK_IT_ITERS] = it - 1;
+      return BVB_LK_REFETCH;
+    }
     int64_t sx = 0, sy = 0;
     for (int32_t j = 0; j < wy; ++j)
       for (int32_t i = 0; i < wx; ++i) {
@@ -355,7 +409,7 @@ static int32_t setup_solve(const int32_t *pa, int32_t npix, int32_t min_det, int
  * each group fits one side, each goes on its own side and those accesses never collide; else
  * Y then X. Only speed depends on it: the results do not. */
 static void scratch_layout(void *scratch, int32_t hx, int32_t hy, int16_t **tmpl, int32_t **grad,
-                           int16_t **work) {
+                           int16_t **work, uint32_t *room) {
   const uint32_t n = (uint32_t)((2 * hx + 2) * (2 * hy + 1));
   const uint32_t ysize = 4 * n + 8, xsize = 4 * n + (uint32_t)(2 * (2 * hy + 1) + 5) * (uint32_t)(4 * hx + 8) + 4;
   const uint32_t lo = (uint32_t)((uintptr_t)scratch & 4095u), b = lo ? 4096u - lo : 0;
@@ -370,6 +424,15 @@ static void scratch_layout(void *scratch, int32_t hx, int32_t hy, int16_t **tmpl
   *tmpl = (int16_t *)(base + y);
   *grad = (int32_t *)(base + x);
   *work = (int16_t *)(base + x + 4 * n);
+  /* What is left (both sizes are whole words): after Y up to X or the end (first: on Y's side
+   * of a split, where the level copies' loads meet none of the accesses they pair with), and
+   * after X up to Y or the end. */
+  const uint32_t ye = y + ysize, xe = x + xsize;
+  const uint32_t yend = x > y ? x : BVB_LK_SCRATCH_BYTES, xend = y > x ? y : BVB_LK_SCRATCH_BYTES;
+  room[0] = ye;
+  room[1] = yend > ye ? yend - ye : 0;
+  room[2] = xe;
+  room[3] = xend > xe ? xend - xe : 0;
 }
 
 const uint8_t *bvb_lk_scratch_place(const uint8_t *area, uint32_t bytes, int32_t win_w, int32_t win_h) {
@@ -391,6 +454,94 @@ static int32_t inside(int32_t q7x, int32_t q7y, int32_t hx, int32_t hy, int32_t 
          iy + hy + 1 + margin <= h - 1;
 }
 
+/* The level copies (ops->fetch): for each level step (a feature at a level) the bytes its
+ * template reads from prev (wx + 3 by wy + 3 from ix - hx - 1, iy - hy - 1, the start rounded
+ * down to even so that every slot of one level keeps its alignment) and those around the
+ * template position in next that its iterations read while they move by at most FETCH_MARGIN
+ * pixels, clipped to the level; one step ahead, in two sets of buffers, on two jobs. */
+#define FETCH_MARGIN 4
+
+struct lk_fetch {
+  const struct bvb_lk_ops *ops;
+  int32_t on, total, levels, hx, hy;
+  const int32_t *in;
+  const uint8_t *const *lp, *const *ln;
+  const int32_t *lw, *lh, *ls;
+  uint8_t *job[BVB_LK_MAX_LEVELS], *pb[2], *nb[2];
+  int32_t keys[BVB_LK_MAX_LEVELS][4];
+  /* a job area per level, so that a slot keeps its shape from feature to feature and is
+   * only re-addressed (each is built after the job before it ended) */
+  int32_t pw, ph, nw, nh;
+  int32_t want[BVB_LK_MAX_LEVELS]; /* per level: 1 prev's blocks worth copying, 2 next's */
+  int32_t flight;        /* the step whose copies are on their way (-1: none) */
+  int32_t mask[2];       /* per set: 1 prev's block there, 2 next's */
+  int32_t px0[2], py0[2], nx0[2], ny0[2], nx1[2], ny1[2];
+};
+
+/* Starts the copies of step s (feature f at level l) into set s & 1. */
+static void fetch_issue(struct lk_fetch *fe, int32_t s, int32_t f, int32_t l) {
+  const int32_t par = s & 1, want = fe->want[l];
+  fe->flight = s;
+  fe->mask[par] = 0;
+  if (!want) return;
+  const int32_t px = fe->in[2 * f], py = fe->in[2 * f + 1], hx = fe->hx, hy = fe->hy;
+  const int32_t tx = ((px + 32768) >> l) - 32768, ty = ((py + 32768) >> l) - 32768;
+  const int32_t t7x = (tx + 256) >> 9, t7y = (ty + 256) >> 9, ix = t7x >> 7, iy = t7y >> 7;
+  const int32_t w = fe->lw[l], h = fe->lh[l], st = fe->ls[l];
+  if (!inside(t7x, t7y, hx, hy, w, h, 1)) return; /* no template: the step reads nothing */
+  struct bvb_lk_copy c[2];
+  int32_t x0 = (ix - hx - 1) & ~1, y0 = iy - hy - 1, x1 = x0 + fe->pw - 1 < w - 1 ? x0 + fe->pw - 1 : w - 1;
+  fe->px0[par] = x0;
+  fe->py0[par] = y0;
+  c[0].src = fe->lp[l] + y0 * st + x0;
+  c[0].src_stride = st;
+  c[0].dst = fe->pb[par];
+  c[0].dst_stride = fe->pw;
+  c[0].width = x1 - x0 + 1;
+  c[0].rows = want & 1 ? fe->ph : 0;
+  c[0].key = (l * 2) << 24 | c[0].width << 12 | c[0].rows;
+  x0 = ix - hx - FETCH_MARGIN;
+  x0 = (x0 < 0 ? 0 : x0) & ~1;
+  x1 = x0 + fe->nw - 1 < w - 1 ? x0 + fe->nw - 1 : w - 1;
+  y0 = iy - hy - FETCH_MARGIN;
+  y0 = y0 < 0 ? 0 : y0;
+  int32_t y1 = iy + hy + 1 + FETCH_MARGIN < h - 1 ? iy + hy + 1 + FETCH_MARGIN : h - 1;
+  fe->nx0[par] = x0;
+  fe->ny0[par] = y0;
+  fe->nx1[par] = x1;
+  fe->ny1[par] = y1;
+  c[1].src = fe->ln[l] + y0 * st + x0;
+  c[1].src_stride = st;
+  c[1].dst = fe->nb[par];
+  c[1].dst_stride = fe->nw;
+  c[1].width = x1 - x0 + 1;
+  c[1].rows = want & 2 ? y1 - y0 + 1 : 0;
+  c[1].key = (l * 2 + 1) << 24 | c[1].width << 12 | c[1].rows;
+  fe->mask[par] = fe->ops->fetch(fe->job[l], fe->keys[l], c, 2);
+}
+
+/* Before step s: its copies there (mask of what is), the next step's on their way. */
+static int32_t fetch_begin(struct lk_fetch *fe, int32_t s, int32_t f, int32_t l) {
+  if (!fe->on) return 0;
+  if (fe->flight != s) { /* a feature lost early: the steps in between are not run */
+    if (fe->flight >= 0 && fe->mask[fe->flight & 1]) fe->ops->fetch_wait();
+    fetch_issue(fe, s, f, l);
+  }
+  int32_t m = fe->mask[s & 1];
+  if (m && fe->ops->fetch_wait() != 0) m = 0;
+  fe->flight = -1;
+  if (s + 1 < fe->total) {
+    const int32_t nl = l > 0 ? l - 1 : fe->levels - 1;
+    if (fe->want[nl]) {
+      fetch_issue(fe, s + 1, l > 0 ? f : f + 1, nl);
+    } else {
+      fe->flight = s + 1;
+      fe->mask[(s + 1) & 1] = 0;
+    }
+  }
+  return m;
+}
+
 void bvb_lk_track_run(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_t *next,
                       const uint8_t *next_pyr, int32_t width, int32_t height, int32_t stride,
                       const struct bvb_lk_params *params, const int32_t *in, int32_t *out,
@@ -400,7 +551,8 @@ void bvb_lk_track_run(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_
   int16_t *tmpl;
   int32_t *grad;
   int16_t *work;
-  scratch_layout(scratch, hx, hy, &tmpl, &grad, &work);
+  uint32_t room[4];
+  scratch_layout(scratch, hx, hy, &tmpl, &grad, &work, room);
   const uint8_t *lp[BVB_LK_MAX_LEVELS], *ln[BVB_LK_MAX_LEVELS];
   int32_t lw[BVB_LK_MAX_LEVELS], lh[BVB_LK_MAX_LEVELS], ls[BVB_LK_MAX_LEVELS];
   for (int32_t l = 0; l < levels; ++l) {
@@ -411,25 +563,75 @@ void bvb_lk_track_run(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_
     lp[l] = l == 0 ? prev : prev_pyr + off;
     ln[l] = l == 0 ? next : next_pyr + off;
   }
+  struct lk_fetch fe;
+  fe.on = 0;
+  fe.flight = -1;
+  if (ops->fetch && ops->fetch_wait && params->count > 0 && ops->fetch(scratch, 0, 0, 0)) {
+    fe.pw = 2 * hx + 6;
+    fe.ph = wy + 3;
+    fe.nw = 2 * hx + 4 + 2 * FETCH_MARGIN;
+    fe.nh = wy + 1 + 2 * FETCH_MARGIN;
+    const uint32_t pbytes = (uint32_t)((fe.pw * fe.ph + 3) & ~3), nbytes = (uint32_t)((fe.nw * fe.nh + 3) & ~3);
+    const uint32_t need = (uint32_t)levels * BVB_LK_PYR_JOB_BYTES + 2 * (pbytes + nbytes);
+    const int32_t r = room[1] >= need ? 0 : room[3] >= need ? 2 : -1;
+    if (r >= 0) {
+      uint8_t *m = (uint8_t *)scratch + room[r];
+      for (int32_t par = 0; par < 2; ++par) {
+        fe.pb[par] = m;
+        m += pbytes;
+        fe.nb[par] = m;
+        m += nbytes;
+      }
+      for (int32_t j = 0; j < levels; ++j) {
+        fe.job[j] = m;
+        m += BVB_LK_PYR_JOB_BYTES;
+        for (int32_t k = 0; k < 4; ++k) fe.keys[j][k] = -1;
+      }
+      fe.on = 0;
+      for (int32_t l = 0; l < levels; ++l) {
+        fe.want[l] = (ops->fetch((void *)(uintptr_t)lp[l], 0, 0, -1) ? 1 : 0) |
+                     (ops->fetch((void *)(uintptr_t)ln[l], 0, 0, -1) ? 2 : 0);
+        fe.on |= fe.want[l];
+      }
+      fe.ops = ops;
+      fe.total = params->count * levels;
+      fe.levels = levels;
+      fe.hx = hx;
+      fe.hy = hy;
+      fe.in = in;
+      fe.lp = lp;
+      fe.ln = ln;
+      fe.lw = lw;
+      fe.lh = lh;
+      fe.ls = ls;
+      if (fe.on) fetch_issue(&fe, 0, 0, levels - 1);
+    }
+  }
   int32_t pa[BVB_LK_PA_WORDS], it[BVB_LK_IT_WORDS];
   for (int32_t f = 0; f < params->count; ++f) {
     const int32_t px = in[2 * f], py = in[2 * f + 1];
     int32_t gx = 0, gy = 0, status = BVB_LK_TRACKED, iters = 0, qx = px, qy = py;
     it[BVB_LK_IT_BX] = it[BVB_LK_IT_BY] = 0;
     for (int32_t l = levels - 1; l >= 0; --l) {
+      const int32_t step = f * levels + levels - 1 - l, have = fetch_begin(&fe, step, f, l), par = step & 1;
       const int32_t tx = ((px + 32768) >> l) - 32768, ty = ((py + 32768) >> l) - 32768;
       const int32_t t7x = (tx + 256) >> 9, t7y = (ty + 256) >> 9;
       const int32_t fits = inside(t7x, t7y, hx, hy, lw[l], lh[l], 1);
       int32_t usable = 0;
       if (fits) {
+        const uint8_t *img = lp[l];
         pa[BVB_LK_PA_STRIDE] = ls[l];
+        if (have & 1) { /* the copy's origin: where pixel (0, 0) would be */
+          img = (const uint8_t *)((uintptr_t)fe.pb[par] - (uintptr_t)(fe.py0[par] * fe.pw + fe.px0[par]));
+          pa[BVB_LK_PA_STRIDE] = fe.pw;
+        }
         pa[BVB_LK_PA_IX] = t7x >> 7;
         pa[BVB_LK_PA_IY] = t7y >> 7;
         pa[BVB_LK_PA_FX] = t7x & 127;
         pa[BVB_LK_PA_FY] = t7y & 127;
         pa[BVB_LK_PA_HX] = hx;
         pa[BVB_LK_PA_HY] = hy;
-        ops->patch(lp[l], tmpl, grad, work, pa);
+        ops->patch(img, tmpl, grad, work, pa);
         usable = setup_solve(pa, npix, params->min_det, it);
       }
       if (!usable) {
@@ -443,7 +645,20 @@ void bvb_lk_track_run(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_
         qy = py;
         break;
       }
+      const uint8_t *img = ln[l];
       it[BVB_LK_IT_STRIDE] = ls[l];
+      it[BVB_LK_IT_RX0] = 0;
+      it[BVB_LK_IT_RY0] = 0;
+      it[BVB_LK_IT_RX1] = lw[l] - 1;
+      it[BVB_LK_IT_RY1] = lh[l] - 1;
+      if (have & 2) {
+        img = (const uint8_t *)((uintptr_t)fe.nb[par] - (uintptr_t)(fe.ny0[par] * fe.nw + fe.nx0[par]));
+        it[BVB_LK_IT_STRIDE] = fe.nw;
+        it[BVB_LK_IT_RX0] = fe.nx0[par];
+        it[BVB_LK_IT_RY0] = fe.ny0[par];
+        it[BVB_LK_IT_RX1] = fe.nx1[par];
+        it[BVB_LK_IT_RY1] = fe.ny1[par];
+      }
       it[BVB_LK_IT_WIDTH] = lw[l];
       it[BVB_LK_IT_HEIGHT] = lh[l];
       it[BVB_LK_IT_HX] = hx;
@@ -453,7 +668,18 @@ void bvb_lk_track_run(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_
       it[BVB_LK_IT_FIXED] = params->flags & BVB_LK_FIXED_ITER;
       it[BVB_LK_IT_QX] = tx + gx;
       it[BVB_LK_IT_QY] = ty + gy;
-      const int32_t st = ops->iterate(ln[l], tmpl, grad, work, it);
+      int32_t st = ops->iterate(img, tmpl, grad, work, it);
+      if (st == BVB_LK_REFETCH) { /* the rest of the level on the level itself */
+        const int32_t done = it[BVB_LK_IT_ITERS];
+        it[BVB_LK_IT_STRIDE] = ls[l];
+        it[BVB_LK_IT_RX0] = 0;
+        it[BVB_LK_IT_RY0] = 0;
+        it[BVB_LK_IT_RX1] = lw[l] - 1;
+        it[BVB_LK_IT_RY1] = lh[l] - 1;
+        it[BVB_LK_IT_MAXITER] = params->max_iter - done;
+        st = ops->iterate(ln[l], tmpl, grad, work, it);
+        it[BVB_LK_IT_ITERS] += done;
+      }
       iters += it[BVB_LK_IT_ITERS];
       qx = it[BVB_LK_IT_QX];
       qy = it[BVB_LK_IT_QY];
@@ -478,13 +704,14 @@ void bvb_lk_track_run(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_
     o[4] = it[BVB_LK_IT_BX];
     o[5] = it[BVB_LK_IT_BY];
   }
+  if (fe.on && fe.flight >= 0 && fe.mask[fe.flight & 1]) ops->fetch_wait();
 }
 
 void bvb_lk_track_c(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_t *next,
                     const uint8_t *next_pyr, int32_t width, int32_t height, int32_t stride,
                     const struct bvb_lk_params *params, const int32_t *in, int32_t *out,
                     void *scratch) {
-  static const struct bvb_lk_ops c_ops = {bvb_lk_patch_c, bvb_lk_iterate_c};
+  static const struct bvb_lk_ops c_ops = {bvb_lk_patch_c, bvb_lk_iterate_c, 0, 0};
   bvb_lk_track_run(prev, prev_pyr, next, next_pyr, width, height, stride, params, in, out, scratch,
                    &c_ops);
 }
