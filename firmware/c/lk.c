@@ -62,8 +62,9 @@ static int32_t lk_in_sdram(const void *p) { return (uintptr_t)p < 0x02000000u; }
 
 /* Slot *slot of a job for x: re-addressed when it was last prepared for the same shape (key),
  * prepared again otherwise; what DMA refuses is copied by the core at once. */
-static void lk_add(uint8_t *job, int32_t *keys, int32_t *slot, const struct bvb_dma_xfer *x, int32_t key) {
-  if (keys[*slot] == key) {
+static inline __attribute__((always_inline)) void lk_add(uint8_t *job, int32_t *keys, int32_t *slot,
+                                                        const struct bvb_dma_xfer *x, int32_t key) {
+  if (__builtin_expect(keys[*slot] == key, 1)) {
     bvb_dma_move(job, *slot, x);
   } else if (bvb_dma_prepare(job, *slot, x) == 0) {
     keys[*slot] = key;
@@ -204,10 +205,10 @@ int32_t bvb_lk_fetch_dma(void *job, int32_t *keys, const struct bvb_lk_copy *c, 
   int32_t mask = 0, slot = 0;
   if (n == 0) return !lk_in_sdram(job) && bvb_dma_reachable(job, BVB_LK_SCRATCH_BYTES);
   if (n < 0) return lk_in_sdram(job);
-  if (*LK_MDMA_D0_IRQ_STATUS & (LK_DMA_RUN | LK_DMA_ERR)) return 0;
+  if (__builtin_expect(*LK_MDMA_D0_IRQ_STATUS & (LK_DMA_RUN | LK_DMA_ERR), 0)) return 0;
   for (int32_t i = 0; i < n; ++i) {
     /* the destination is the scratch, which the probe found where DMA reaches */
-    if (c[i].rows <= 0 || c[i].width <= 0 || !lk_in_sdram(c[i].src)) continue;
+    if (__builtin_expect(c[i].rows <= 0 || c[i].width <= 0 || !lk_in_sdram(c[i].src), 0)) continue;
     lk_add((uint8_t *)job, keys, &slot, (const struct bvb_dma_xfer *)&c[i], c[i].key);
     mask |= 1 << i;
   }
@@ -244,6 +245,28 @@ static int32_t bitlen(uint32_t v) {
   if (v >= 0x4u) v >>= 2, n += 2;
   if (v >= 0x2u) v >>= 1, n += 1;
   return n + (int32_t)v;
+#endif
+}
+
+/* 2^28 / d for 2^14 <= d < 2^15 (the normalised determinant). The Blackfin's DIVS and 15
+ * DIVQ steps take a dividend of twice the quotient's scale (2^29: they give the 16-bit
+ * quotient of half the dividend) whose high half is below d, and give it truncated, the C's for
+ * positive values: checked for every such d against the simulator's DIVS and DIVQ. 16 cycles,
+ * where libgcc's division took some 190 (one per feature and level); elsewhere the C division. */
+static int32_t div_2p28(int32_t d) {
+#if defined(__bfin__)
+  int32_t q = 1 << 29;
+  __asm__("DIVS (%0, %1);\n\t"
+          "DIVQ (%0, %1);\n\tDIVQ (%0, %1);\n\tDIVQ (%0, %1);\n\tDIVQ (%0, %1);\n\t"
+          "DIVQ (%0, %1);\n\tDIVQ (%0, %1);\n\tDIVQ (%0, %1);\n\tDIVQ (%0, %1);\n\t"
+          "DIVQ (%0, %1);\n\tDIVQ (%0, %1);\n\tDIVQ (%0, %1);\n\tDIVQ (%0, %1);\n\t"
+          "DIVQ (%0, %1);\n\tDIVQ (%0, %1);\n\tDIVQ (%0, %1);"
+          : "+d"(q)
+          : "d"(d)
+          : "cc");
+  return q & 0xFFFF;
+#else
+  return (1 << 28) / d;
 #endif
 }
 
@@ -392,7 +415,7 @@ static int32_t setup_solve(const int32_t *pa, int32_t npix, int32_t min_det, int
   const int32_t dd = a * d - c * c;
   if (dd <= 0) return 0;
   const int32_t u = bitlen((uint32_t)dd) - 15;
-  const int32_t r = (1 << 28) / shift_by(dd, u);
+  const int32_t r = div_2p28(shift_by(dd, u));
   it[BVB_LK_IT_MXX] = (d * r) >> 15;
   it[BVB_LK_IT_MXY] = (-c * r) >> 15;
   it[BVB_LK_IT_MYY] = (a * r) >> 15;
@@ -479,16 +502,17 @@ struct lk_fetch {
 };
 
 /* Starts the copies of step s (feature f at level l) into set s & 1. */
-static void fetch_issue(struct lk_fetch *fe, int32_t s, int32_t f, int32_t l) {
+static inline __attribute__((always_inline)) void fetch_issue(struct lk_fetch *fe, int32_t s, int32_t f,
+                                                               int32_t l) {
   const int32_t par = s & 1, want = fe->want[l];
   fe->flight = s;
   fe->mask[par] = 0;
-  if (!want) return;
+  if (__builtin_expect(!want, 0)) return;
   const int32_t px = fe->in[2 * f], py = fe->in[2 * f + 1], hx = fe->hx, hy = fe->hy;
   const int32_t tx = ((px + 32768) >> l) - 32768, ty = ((py + 32768) >> l) - 32768;
   const int32_t t7x = (tx + 256) >> 9, t7y = (ty + 256) >> 9, ix = t7x >> 7, iy = t7y >> 7;
   const int32_t w = fe->lw[l], h = fe->lh[l], st = fe->ls[l];
-  if (!inside(t7x, t7y, hx, hy, w, h, 1)) return; /* no template: the step reads nothing */
+  if (__builtin_expect(!inside(t7x, t7y, hx, hy, w, h, 1), 0)) return; /* no template: nothing read */
   struct bvb_lk_copy c[2];
   int32_t x0 = (ix - hx - 1) & ~1, y0 = iy - hy - 1, x1 = x0 + fe->pw - 1 < w - 1 ? x0 + fe->pw - 1 : w - 1;
   fe->px0[par] = x0;
@@ -523,7 +547,7 @@ static void fetch_issue(struct lk_fetch *fe, int32_t s, int32_t f, int32_t l) {
 /* Before step s: its copies there (mask of what is), the next step's on their way. */
 static int32_t fetch_begin(struct lk_fetch *fe, int32_t s, int32_t f, int32_t l) {
   if (!fe->on) return 0;
-  if (fe->flight != s) { /* a feature lost early: the steps in between are not run */
+  if (__builtin_expect(fe->flight != s, 0)) { /* a feature lost early: the steps between are not run */
     if (fe->flight >= 0 && fe->mask[fe->flight & 1]) fe->ops->fetch_wait();
     fetch_issue(fe, s, f, l);
   }
