@@ -439,7 +439,7 @@ _bvb_lk_iterate_asm:
 	r0 += -1;
 	[fp + I_LEFT] = r0;
 	cc = r0 == 0;
-	if !cc jump .Lit;
+	if !cc jump .Lit (bp);
 	/* out of iterations: converged if the last update was small */
 	r0 = [fp + I_CONV];
 	cc = r0 == 0;

@@ -400,11 +400,12 @@ int32_t bvb_lk_iterate_c(const uint8_t *img, const int16_t *tmpl, const int32_t 
 
 /* ---- the driver ---- */
 
-/* The inverse of the structure tensor for the iteration block; returns 0 when flat. */
-static int32_t setup_solve(const int32_t *pa, int32_t npix, int32_t min_det, int32_t *it) {
+/* The inverse of the structure tensor for the iteration block; returns 0 when flat (det below
+ * flat = min_det 65536 npix^2, which the driver computes once). */
+static int32_t setup_solve(const int32_t *pa, int64_t flat, int32_t *it) {
   const int32_t gxx = pa[BVB_LK_PA_GXX], gxy = pa[BVB_LK_PA_GXY], gyy = pa[BVB_LK_PA_GYY];
   const int64_t det = (int64_t)gxx * gyy - (int64_t)gxy * gxy;
-  if (det < (int64_t)min_det * 65536 * npix * npix) return 0;
+  if (det < flat) return 0;
   const int32_t m = gxx > gyy ? gxx : gyy;
   if (m <= 0) return 0;
   const int32_t s = bitlen((uint32_t)m) - 15;
@@ -473,8 +474,9 @@ const uint8_t *bvb_lk_scratch_place(const uint8_t *area, uint32_t bytes, int32_t
 
 static int32_t inside(int32_t q7x, int32_t q7y, int32_t hx, int32_t hy, int32_t w, int32_t h, int32_t margin) {
   const int32_t ix = q7x >> 7, iy = q7y >> 7;
-  return ix - hx - margin >= 0 && ix + hx + 1 + margin <= w - 1 && iy - hy - margin >= 0 &&
-         iy + hy + 1 + margin <= h - 1;
+  /* one branch for the caller, not four (each test is cheap and none has effects) */
+  return (ix - hx - margin >= 0) & (ix + hx + 1 + margin <= w - 1) & (iy - hy - margin >= 0) &
+         (iy + hy + 1 + margin <= h - 1);
 }
 
 /* The level copies (ops->fetch): for each level step (a feature at a level) the bytes its
@@ -554,9 +556,9 @@ static int32_t fetch_begin(struct lk_fetch *fe, int32_t s, int32_t f, int32_t l)
   int32_t m = fe->mask[s & 1];
   if (m && fe->ops->fetch_wait() != 0) m = 0;
   fe->flight = -1;
-  if (s + 1 < fe->total) {
+  if (__builtin_expect(s + 1 < fe->total, 1)) {
     const int32_t nl = l > 0 ? l - 1 : fe->levels - 1;
-    if (fe->want[nl]) {
+    if (__builtin_expect(fe->want[nl] != 0, 1)) {
       fetch_issue(fe, s + 1, l > 0 ? f : f + 1, nl);
     } else {
       fe->flight = s + 1;
@@ -572,6 +574,7 @@ void bvb_lk_track_run(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_
                       void *scratch, const struct bvb_lk_ops *ops) {
   const int32_t levels = params->levels, hx = params->win_w >> 1, hy = params->win_h >> 1;
   const int32_t wy = 2 * hy + 1, npix = (2 * hx + 1) * wy;
+  const int64_t flat = (int64_t)params->min_det * 65536 * npix * npix; /* setup_solve's test, once */
   int16_t *tmpl;
   int32_t *grad;
   int16_t *work;
@@ -645,7 +648,7 @@ void bvb_lk_track_run(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_
       if (fits) {
         const uint8_t *img = lp[l];
         pa[BVB_LK_PA_STRIDE] = ls[l];
-        if (have & 1) { /* the copy's origin: where pixel (0, 0) would be */
+        if (__builtin_expect(have & 1, 1)) { /* the copy's origin: where pixel (0, 0) would be */
           img = (const uint8_t *)((uintptr_t)fe.pb[par] - (uintptr_t)(fe.py0[par] * fe.pw + fe.px0[par]));
           pa[BVB_LK_PA_STRIDE] = fe.pw;
         }
@@ -656,7 +659,7 @@ void bvb_lk_track_run(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_
         pa[BVB_LK_PA_HX] = hx;
         pa[BVB_LK_PA_HY] = hy;
         ops->patch(img, tmpl, grad, work, pa);
-        usable = setup_solve(pa, npix, params->min_det, it);
+        usable = setup_solve(pa, flat, it);
       }
       if (!usable) {
         if (l > 0) {
@@ -675,7 +678,7 @@ void bvb_lk_track_run(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_
       it[BVB_LK_IT_RY0] = 0;
       it[BVB_LK_IT_RX1] = lw[l] - 1;
       it[BVB_LK_IT_RY1] = lh[l] - 1;
-      if (have & 2) {
+      if (__builtin_expect((have & 2) != 0, 1)) {
         img = (const uint8_t *)((uintptr_t)fe.nb[par] - (uintptr_t)(fe.ny0[par] * fe.nw + fe.nx0[par]));
         it[BVB_LK_IT_STRIDE] = fe.nw;
         it[BVB_LK_IT_RX0] = fe.nx0[par];
