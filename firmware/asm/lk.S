@@ -148,7 +148,7 @@ _bvb_lk_asm_ops:
 #define I_D     -20    /* the differences: after the template (tmpl + 2 wy (wx + 1) + 4) */
 #define I_STR   -24
                        /* -28, -32: free */
-#define I_ROWB  -36    /* bytes per row of h: 2 (wx + 1) */
+#define I_H1    -36    /* h's second row (h + 2 (wx + 1)) */
 #define I_NPAIR -40    /* pairs in the window: wy (wx + 1) / 2 */
                        /* -44, -48: free */
 #define I_MA    -52    /* Mxy << 16 | Mxx */
@@ -168,7 +168,8 @@ _bvb_lk_asm_ops:
 #define I_YLO   -108
 #define I_YHI   -112
 #define I_ORG   -116   /* img - hy stride - hx: the window's first pixel is ORG + iy stride + ix */
-#define I_SIZE  116
+#define I_D4    -120   /* I_D - 4 */
+#define I_SIZE  120
 #define I_ARG_WORK  48
 #define I_ARG_BLOCK 52
 #define BLK(n) ((n) * 4)
@@ -189,8 +190,9 @@ _bvb_lk_iterate_asm:
 	r6 = [p5 + BLK(BVB_LK_IT_HX)];
 	r7 = [p5 + BLK(BVB_LK_IT_HY)];
 	r2 = r6 << 2;
-	r2 += 4;
-	[fp + I_ROWB] = r2;      /* 4 hx + 4 */
+	r2 += 4;                 /* bytes per row of h: 4 hx + 4 */
+	r0 = r0 + r2;
+	[fp + I_H1] = r0;        /* h's second row */
 	r3 = r7 << 1;
 	r3 += 2;                 /* wy + 1 */
 	[fp + I_ROWS] = r3;
@@ -208,6 +210,8 @@ _bvb_lk_iterate_asm:
 	r0 = r0 + r2;
 	r0 += 4;
 	[fp + I_D] = r0;
+	r0 += -4;
+	[fp + I_D4] = r0;        /* the differences' first store goes a word before them */
 	r2 = r6;
 	r2 += -1;
 	[fp + I_INNER] = r2;
@@ -258,7 +262,9 @@ _bvb_lk_iterate_asm:
 	r0 = [p5 + BLK(BVB_LK_IT_EPS)];
 	[fp + I_EPS] = r0;
 	r0 = [p5 + BLK(BVB_LK_IT_FIXED)];
-	[fp + I_FIXED] = r0;
+	cc = r0 == 0;
+	r0 = cc;
+	[fp + I_FIXED] = r0;     /* 1: stop at convergence */
 	r0 = [p5 + BLK(BVB_LK_IT_QX)];
 	[fp + I_QX] = r0;
 	r0 = [p5 + BLK(BVB_LK_IT_QY)];
@@ -339,13 +345,11 @@ _bvb_lk_iterate_asm:
 	/* vertical and the differences, over the flattened window */
 	r0 = [fp + I_H];
 	i0 = r0;
-	r1 = [fp + I_ROWB];
-	r0 = r0 + r1;
+	r0 = [fp + I_H1];
 	i1 = r0;
 	r0 = [fp + I_TMPL];
 	i2 = r0;
-	r0 = [fp + I_D];
-	r0 += -4;
+	r0 = [fp + I_D4];
 	i3 = r0;
 	p3 = [fp + I_NPAIR];
 	r0 = [i0++];
@@ -392,20 +396,15 @@ _bvb_lk_iterate_asm:
 	r4 = [fp + I_MB];
 	a1 = r0.l * r3.h, a0 = r0.l * r3.l (is);
 	r1 = (a1 += r0.h * r4.h), r0 = (a0 += r0.h * r4.l) (is);
+	/* by 2^-n, n = S - t in [-63, 26]: one saturating ASHIFT by -n, capped at 31 (a right
+	 * shift, floor, when n >= 0; a left shift that saturates when n < 0, which the clamp
+	 * below makes the C's clamped product), with no branch */
 	r3 = [fp + I_S];
-	r3 = r3 - r2;            /* n = S - t */
-	cc = r3 < 0;
-	if cc jump .Lleft_shift;
-	r0 >>>= r3;
-	r1 >>>= r3;
-	jump .Lclamp;
-.Lleft_shift:
-	r3 = -r3;
+	r2 = r2 - r3;            /* -n */
 	r4 = 31;
-	r3 = min (r3, r4);
-	r0 = ashift r0 by r3.l (s);
-	r1 = ashift r1 by r3.l (s);
-.Lclamp:
+	r2 = min (r2, r4);
+	r0 = ashift r0 by r2.l (s);
+	r1 = ashift r1 by r2.l (s);
 	r4.l = 0;
 	r4.h = 0x40;             /* 2^22 */
 	r5 = -r4;
@@ -429,9 +428,7 @@ _bvb_lk_iterate_asm:
 	r1 = [fp + I_IT];
 	r1 += 1;
 	[fp + I_IT] = r1;
-	r1 = [fp + I_FIXED];
-	cc = r1 == 0;
-	r1 = cc;
+	r1 = [fp + I_FIXED];     /* 1 unless BVB_LK_FIXED_ITER */
 	r1 = r1 & r0;
 	cc = r1 == 0;
 	if !cc jump .Lconverged;
