@@ -319,14 +319,13 @@ _bvb_lk_iterate_asm:
 	p2 = [fp + I_STR];
 	p3 = [fp + I_ROWS];
 	p4 = [fp + I_INNER];
+	cc = p4 == 0;            /* no regular pairs (hx = 1): CC stays, nothing below sets it */
 	lsetup (.Lh_row, .Lh_row_end) lc1 = p3;
 .Lh_row:
 	p0 = p1;
 	r4 = b[p0++] (z);
-	r4 <<= 16;
-	r1 = b[p0++] (z);
+	r4 = r4 << 16 || r1 = b[p0++] (z);
 	a1 = r1.l * r6.l, a0 = r1.l * r6.h (is) || r2 = b[p0++] (z);
-	cc = p4 == 0;
 	if cc jump .Lh_last;
 	lsetup (.Lh_s, .Lh_e) lc0 = p4;
 .Lh_s:	r4 = pack (r2.l, r4.h) || r1 = b[p0++] (z);
@@ -556,8 +555,7 @@ _bvb_lk_patch_asm:
 .Lph_row:
 	p0 = p1;
 	r4 = b[p0++] (z);
-	r4 <<= 16;
-	r1 = b[p0++] (z);
+	r4 = r4 << 16 || r1 = b[p0++] (z);
 	a1 = r1.l * r6.l, a0 = r1.l * r6.h (is) || r2 = b[p0++] (z);
 	lsetup (.Lph_s, .Lph_e) lc0 = p4;
 .Lph_s:	r4 = pack (r2.l, r4.h) || r1 = b[p0++] (z);
