@@ -277,32 +277,26 @@ _bvb_lk_iterate_asm:
 	/* the window: integer position and Q7 fractions, the bounds, the weights */
 	r1 = 256 (x);
 	r0 = [fp + I_QX];
-	r0 = r0 + r1;
-	r0 >>>= 9;               /* q7x */
-	r2 = r0 >>> 7;           /* ix */
-	r3 = 127 (x);
-	r0 = r0 & r3;            /* fx */
-	r4 = [fp + I_QY];
-	r4 = r4 + r1;
-	r4 >>>= 9;
+	r0 = r0 + r1 (ns) || r4 = [fp + I_QY];
+	r0 = r0 >>> 9 || r6 = [fp + I_XLO];      /* q7x */
+	r4 = r4 + r1 (ns) || r7 = [fp + I_XHI];
+	r2 = r0 >>> 7 || r1 = [fp + I_YLO];      /* ix */
+	r4 = r4 >>> 9 || r3 = [fp + I_YHI];      /* q7y */
 	r5 = r4 >>> 7;           /* iy */
-	r4 = r4 & r3;            /* fy */
-	r6 = [fp + I_XLO];
 	cc = r2 < r6;
 	if cc jump .Lbounds;
-	r7 = [fp + I_XHI];
 	cc = r7 < r2;
 	if cc jump .Lbounds;
-	r7 = [fp + I_YLO];
-	cc = r5 < r7;
+	cc = r5 < r1;
 	if cc jump .Lbounds;
-	r1 = [fp + I_YHI];
-	cc = r1 < r5;
+	cc = r3 < r5;
 	if cc jump .Lbounds;
+	r3 = 127 (x);
+	r0 = r0 & r3;            /* fx */
+	r4 = r4 & r3;            /* fy */
 	r1 = [fp + I_STR];
 	r5 *= r1;
-	r5 = r5 + r2;
-	r1 = [fp + I_ORG];
+	r5 = r5 + r2 (ns) || r1 = [fp + I_ORG];
 	r5 = r5 + r1;
 	p1 = r5;                 /* the window's first pixel */
 	r1 = 128 (x);
@@ -387,19 +381,18 @@ _bvb_lk_iterate_asm:
 	r3 = 16;
 	r2 = r3 - r2;
 	r3 = 0;
-	r2 = max (r2, r3);       /* t */
+	/* (the frame's loads ride beside the 32-bit ALU and MAC operations from here on, each
+	 * into a register the operation beside it neither reads nor writes) */
+	r2 = max (r2, r3) || r4 = [fp + I_MB];   /* t */
 	r0 >>>= r2;
 	r1 >>>= r2;
-	r0 = pack (r1.l, r0.l);  /* ny | nx */
-	r3 = [fp + I_MA];
-	r4 = [fp + I_MB];
-	a1 = r0.l * r3.h, a0 = r0.l * r3.l (is);
+	r0 = pack (r1.l, r0.l) || r3 = [fp + I_MA];  /* ny | nx */
+	a1 = r0.l * r3.h, a0 = r0.l * r3.l (is) || r5 = [fp + I_S];
 	r1 = (a1 += r0.h * r4.h), r0 = (a0 += r0.h * r4.l) (is);
 	/* by 2^-n, n = S - t in [-63, 26]: one saturating ASHIFT by -n, capped at 31 (a right
 	 * shift, floor, when n >= 0; a left shift that saturates when n < 0, which the clamp
 	 * below makes the C's clamped product), with no branch */
-	r3 = [fp + I_S];
-	r2 = r2 - r3;            /* -n */
+	r2 = r2 - r5;            /* -n */
 	r4 = 31;
 	r2 = min (r2, r4);
 	r0 = ashift r0 by r2.l (s);
@@ -407,26 +400,20 @@ _bvb_lk_iterate_asm:
 	r4.l = 0;
 	r4.h = 0x40;             /* 2^22 */
 	r5 = -r4;
-	r0 = min (r0, r4);
-	r0 = max (r0, r5);
+	r0 = min (r0, r4) || r2 = [fp + I_QX];
+	r0 = max (r0, r5) || r3 = [fp + I_QY];
 	r1 = min (r1, r4);
 	r1 = max (r1, r5);
-	r2 = [fp + I_QX];
-	r2 = r2 + r0;
-	[fp + I_QX] = r2;
-	r2 = [fp + I_QY];
-	r2 = r2 + r1;
-	[fp + I_QY] = r2;
-	r0 = abs r0;
-	r1 = abs r1;
-	r0 = max (r0, r1);
-	r1 = [fp + I_EPS];
-	cc = r0 <= r1;
+	r2 = r2 + r0 (ns);
+	r3 = r3 + r1 (ns) || [fp + I_QX] = r2;
+	r0 = abs r0 || [fp + I_QY] = r3;
+	r1 = abs r1 || r2 = [fp + I_EPS];
+	r0 = max (r0, r1) || r3 = [fp + I_IT];
+	cc = r0 <= r2;
 	r0 = cc;
 	[fp + I_CONV] = r0;
-	r1 = [fp + I_IT];
-	r1 += 1;
-	[fp + I_IT] = r1;
+	r3 += 1;
+	[fp + I_IT] = r3;
 	r1 = [fp + I_FIXED];     /* 1 unless BVB_LK_FIXED_ITER */
 	r1 = r1 & r0;
 	cc = r1 == 0;
