@@ -17,12 +17,11 @@
  *     then one vector subtract from the template: 3 issues per pair;
  *   b: two dual MACs per pair into the 40-bit accumulators (dI x Ix in A0, dI x Iy in A1), then
  *     an arithmetic shift by 4.
- * Cycles (bfbench bench: 32 Harris corners of Grove2, 3 levels, 7x7, 10 iterations per level
- * fixed; work count 32 x 49 x 10 x 3): 535,786 at 160x120, 618,929 at 320x240, 533,767 at
- * 640x480, 11.4, 13.2, 11.4 cycles per window pixel and iteration, all included (the C
- * reference: 77-89, 6.7x to 6.8x). An iteration of a 7x7 window is about 430 cycles (horizontal
- * 8 rows x ~21, vertical ~94, b ~66, the solve and tests ~95); the template step about 650 per
- * level; the rest is the C driver (the flat test and the inverse with its division).
+ * Bench (bfbench bench): 32 Harris corners of the repository's integer texture and the same
+ * texture moved by (2.3, -1.4) pixels, 3 levels, 7x7, 10 iterations per level fixed; work
+ * count 32 x 49 x 10 x 3. An iteration of a 7x7 window takes 411 cycles (the horizontal pass
+ * 8 rows x 19, vertical 84, b 56, the rest about 110); the template step about 990 a level;
+ * the rest is the C driver (the flat test and the inverse with its division, the copies).
  * Lower bound: 3.5 issues per window pixel and iteration (4 bilinear products: 2 dual-MAC
  * issues, half a vector subtract, 2 products for b: 1 issue), not counting the per-level work.
  * Level copies. The windows' rows came through the data cache from SDRAM (a line fill per
@@ -36,20 +35,23 @@
  * L1, a scratch DMA cannot reach or one with no room (large windows) read in place, and so
  * does a step that finds the DMA stream busy with a caller's job (the odometry's state copy).
  * Modelled (--timing bf537, bfbench bench, frames and levels in SDRAM, the scratch in L1 bank B
- * across a 4 KB boundary, as bvb_lk_scratch_place puts it): 598,261 at 160x120 (12.7 per
- * window pixel and iteration against the bound's 3.5: 3.63x), 692,666 at 320x240 (14.7:
- * 4.21x), 697,951 at 640x480 (14.8: 4.24x); the simulator's own count 571,887 / 670,773 /
- * 676,816. Before the copies (the scratch in SDRAM): 607,794 / 749,689 / 811,391 (sim
- * 483,731 / 575,038 / 581,091); before the driver's bit lengths by SIGNBITS: 617,443 /
- * 761,874 / 823,847; before the scratch layout below and the bit lengths by halving: 710,633 /
+ * across a 4 KB boundary, as bvb_lk_scratch_place puts it): 539,247 at 160x120 (11.5 per
+ * window pixel and iteration against the bound's 3.5: 3.28x), 621,493 at 320x240 (13.2:
+ * 3.77x), 625,945 at 640x480 (13.3: 3.80x); the simulator's own count 507,743 / 594,073 /
+ * 599,293. Before the copies (the scratch in SDRAM, the division by libgcc, the iteration
+ * with its branches and unpaired frame accesses): 607,794 / 749,689 / 811,391 (sim 483,731 /
+ * 575,038 / 581,091); before the driver's bit lengths by SIGNBITS: 617,443 / 761,874 /
+ * 823,847; before the scratch layout below and the bit lengths by halving: 710,633 /
  * 869,867 / 934,317.
- * Where the rest goes (bfbench profile lk_track, 320x240): the iteration step 433k (930
- * iterations of 453 cycles against their 438 issues: the separable steps' own issues above,
- * the horizontal pass's per-row set-up, the solve's frame loads and stores), the template
- * step 93k (9k of it the dual loads of two Te rows in one sub-bank), the C driver 59k and
- * its divisions and 64-bit products 27k (the flat test and the inverse), and the copies'
- * cost on the core, some 80k (per level step: the blocks' addresses, the job's slots
- * re-addressed, its start and wait). The iteration's dual accesses pair h with the
+ * Where the rest goes (bfbench profile lk_track, 320x240): the iteration step 395k (930
+ * iterations of 411 cycles against their 403 issues: the passes at their rates above, 292,
+ * and some 110 of per-iteration work: the window's position and bounds, the weights, the
+ * passes' set-up, the solve and the update; the horizontal pass's rows cost 19 for their 12
+ * pair issues), the template step 92k (9k of it the dual loads of two Te rows in one
+ * sub-bank), the C driver 87k (its per-level bounds, the flat test and the inverse, the
+ * copies' addresses; its code from SDRAM, 11k of instruction-cache fills) and the copies'
+ * jobs on the core 44k (the slots re-addressed, the start, the waits). The iteration's dual
+ * accesses pair h with the
  * template, h with the differences and the gradients with the differences: bvb_lk_track_run
  * puts the template and the differences on one side of a 4 KB sub-bank boundary of the
  * scratch and h and the gradients on the other whenever the scratch spans one
@@ -680,8 +682,8 @@ _bvb_lk_patch_asm:
  * and sends levels 1 to 3 out by memory DMA, one band ahead. Then the bus is the bound: the
  * frame's 76,800 bytes in and the levels' 24,000 out at 0.5 byte per core cycle (bvb/dma.h),
  * 201,600 cycles at 320x240, 8.4 per level byte (3 levels). Modelled (bfbench bench, frame
- * and levels in SDRAM, scratch in L1 bank B): 58,854 at 160x120 (9.81 per level byte, 1.17x),
- * 213,986 at 320x240 (8.92, 1.06x), 836,998 at 640x480 (8.72, 1.04x); before (the frame and
+ * and levels in SDRAM, scratch in L1 bank B): 59,026 at 160x120 (9.84 per level byte, 1.17x),
+ * 214,149 at 320x240 (8.92, 1.06x), 836,791 at 640x480 (8.72, 1.04x); before (the frame and
  * the levels through the data cache): 120,753 / 507,715 / 1,930,121. Where the rest goes: the
  * core waits for the bus for 69% of the call (bfbench profile); the compute, 1.38x its issue
  * bound (the two rows' dual loads share a 4 KB sub-bank in the band buffer: 11k collision
