@@ -171,7 +171,8 @@ _bvb_lk_asm_ops:
 #define I_YHI   -112
 #define I_ORG   -116   /* img - hy stride - hx: the window's first pixel is ORG + iy stride + ix */
 #define I_D4    -120   /* I_D - 4 */
-#define I_SIZE  120
+#define I_HSKIP -124   /* stride - (wx + 1) */
+#define I_SIZE  124
 #define I_ARG_WORK  48
 #define I_ARG_BLOCK 52
 #define BLK(n) ((n) * 4)
@@ -195,6 +196,9 @@ _bvb_lk_iterate_asm:
 	r2 += 4;                 /* bytes per row of h: 4 hx + 4 */
 	r0 = r0 + r2;
 	[fp + I_H1] = r0;        /* h's second row */
+	r0 = r2 >> 1;            /* wx + 1: the bytes a row of the window reads */
+	r0 = r1 - r0;
+	[fp + I_HSKIP] = r0;     /* from the end of a row's bytes to the next row's first */
 	r3 = r7 << 1;
 	r3 += 2;                 /* wy + 1 */
 	[fp + I_ROWS] = r3;
@@ -300,7 +304,7 @@ _bvb_lk_iterate_asm:
 	r5 *= r1;
 	r5 = r5 + r2 (ns) || r1 = [fp + I_ORG];
 	r5 = r5 + r1;
-	p1 = r5;                 /* the window's first pixel */
+	p0 = r5;                 /* the window's first pixel */
 	r1 = 128 (x);
 	r6 = r1 - r0;            /* 128 - fx */
 	r6 = pack (r0.l, r6.l);  /* W = fx | 128 - fx */
@@ -312,13 +316,12 @@ _bvb_lk_iterate_asm:
 	/* horizontal: h rows 0 .. wy */
 	r0 = [fp + I_H];
 	i0 = r0;
-	p2 = [fp + I_STR];
+	p2 = [fp + I_HSKIP];
 	p3 = [fp + I_ROWS];
 	p4 = [fp + I_INNER];
 	cc = p4 == 0;            /* no regular pairs (hx = 1): CC stays, nothing below sets it */
 	lsetup (.Lh_row, .Lh_row_end) lc1 = p3;
 .Lh_row:
-	p0 = p1;
 	r4 = b[p0++] (z);
 	r4 = r4 << 16 || r1 = b[p0++] (z);
 	a1 = r1.l * r6.l, a0 = r1.l * r6.h (is) || r2 = b[p0++] (z);
@@ -335,7 +338,7 @@ _bvb_lk_iterate_asm:
 	r5.h = (a1 += r4.h * r6.h), r5.l = (a0 += r4.l * r6.l) (is);
 	[i0++] = r5;
 .Lh_row_end:
-	p1 = p1 + p2;
+	p0 = p0 + p2;
 
 	/* vertical and the differences, over the flattened window */
 	r0 = [fp + I_H];
@@ -520,8 +523,11 @@ _bvb_lk_patch_asm:
 	r3 += -1;
 	r1 = r1 + r3;
 	r0 = r0 + r1;
-	p1 = r0;
-	p2 = r2;
+	p0 = r0;
+	r3 = r6 << 1;
+	r3 += 4;                 /* wx + 3: the bytes a row reads */
+	r2 = r2 - r3;
+	p2 = r2;                 /* from the end of a row's bytes to the next row's first */
 	r0 = [p5 + BLK(BVB_LK_PA_FX)];
 	r1 = 128 (x);
 	r2 = r1 - r0;
@@ -542,7 +548,6 @@ _bvb_lk_patch_asm:
 	p4 = [fp + P_HX];
 	lsetup (.Lph_row, .Lph_row_end) lc1 = p3;
 .Lph_row:
-	p0 = p1;
 	r4 = b[p0++] (z);
 	r4 = r4 << 16 || r1 = b[p0++] (z);
 	a1 = r1.l * r6.l, a0 = r1.l * r6.h (is) || r2 = b[p0++] (z);
@@ -557,7 +562,7 @@ _bvb_lk_patch_asm:
 	r5.h = (a1 += r4.h * r6.h), r5.l = (a0 += r4.l * r6.l) (is);
 	[i0++] = r5;
 .Lph_row_end:
-	p1 = p1 + p2;
+	p0 = p0 + p2;
 
 	/* vertical: wy + 2 rows of Te, flattened */
 	r0 = [fp + P_H];
