@@ -278,6 +278,11 @@ _bvb_lk_iterate_asm:
 	r0 = 0;
 	[fp + I_IT] = r0;
 	[fp + I_CONV] = r0;
+	/* the loops' counts and the row step, for every iteration (nothing below changes them) */
+	p1 = [fp + I_NPAIR];
+	p2 = [fp + I_HSKIP];
+	p3 = [fp + I_ROWS];
+	p4 = [fp + I_INNER];
 
 .Lit:
 	/* the window: integer position and Q7 fractions, the bounds, the weights */
@@ -310,15 +315,11 @@ _bvb_lk_iterate_asm:
 	r6 = pack (r0.l, r6.l);  /* W = fx | 128 - fx */
 	r7 = r1 - r4;
 	r7 <<= 6;
-	r4 <<= 6;
+	r4 = r4 << 6 || r0 = [fp + I_H];
 	r7 = pack (r4.l, r7.l);  /* V = 64 fy | 64 (128 - fy) */
 
 	/* horizontal: h rows 0 .. wy */
-	r0 = [fp + I_H];
 	i0 = r0;
-	p2 = [fp + I_HSKIP];
-	p3 = [fp + I_ROWS];
-	p4 = [fp + I_INNER];
 	cc = p4 == 0;            /* no regular pairs (hx = 1): CC stays, nothing below sets it */
 	lsetup (.Lh_row, .Lh_row_end) lc1 = p3;
 .Lh_row:
@@ -349,10 +350,9 @@ _bvb_lk_iterate_asm:
 	i2 = r0;
 	r0 = [fp + I_D4];
 	i3 = r0;
-	p3 = [fp + I_NPAIR];
 	r0 = [i0++];
 	r1 = [i1++];
-	lsetup (.Lv_s, .Lv_e) lc0 = p3;
+	lsetup (.Lv_s, .Lv_e) lc0 = p1;
 .Lv_s:	a1 = r0.h * r7.l, a0 = r0.l * r7.l || r0 = [i0++] || r2 = [i2++];
 	r3.h = (a1 += r1.h * r7.h), r3.l = (a0 += r1.l * r7.h) (t) || r1 = [i1++] || [i3++] = r4;
 .Lv_e:	r4 = r2 -|- r3;
@@ -367,7 +367,7 @@ _bvb_lk_iterate_asm:
 	r0 = [i0++];
 	r1 = [i1++];
 	r2 = [i1++];
-	lsetup (.Lb_s, .Lb_e) lc0 = p3;
+	lsetup (.Lb_s, .Lb_e) lc0 = p1;
 .Lb_s:	a1 += r0.l * r1.h, a0 += r0.l * r1.l (is) || r1 = [i1++];
 .Lb_e:	a1 += r0.h * r2.h, a0 += r0.h * r2.l (is) || r2 = [i1++] || r0 = [i0++];
 	a0 = a0 >>> 4;
