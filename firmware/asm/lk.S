@@ -19,8 +19,8 @@
  *     an arithmetic shift by 4.
  * Bench (bfbench bench): 32 Harris corners of the repository's integer texture and the same
  * texture moved by (2.3, -1.4) pixels, 3 levels, 7x7, 10 iterations per level fixed; work
- * count 32 x 49 x 10 x 3. An iteration of a 7x7 window takes 411 cycles (the horizontal pass
- * 8 rows x 19, vertical 84, b 56, the rest about 110); the template step about 990 a level;
+ * count 32 x 49 x 10 x 3. An iteration of a 7x7 window takes 398 cycles (the horizontal pass
+ * 8 rows x 18, vertical 84, b 56, the rest about 115); the template step about 980 a level;
  * the rest is the C driver (the flat test and the inverse with its division, the copies).
  * Lower bound: 3.5 issues per window pixel and iteration (4 bilinear products: 2 dual-MAC
  * issues, half a vector subtract, 2 products for b: 1 issue), not counting the per-level work.
@@ -35,19 +35,19 @@
  * L1, a scratch DMA cannot reach or one with no room (large windows) read in place, and so
  * does a step that finds the DMA stream busy with a caller's job (the odometry's state copy).
  * Modelled (--timing bf537, bfbench bench, frames and levels in SDRAM, the scratch in L1 bank B
- * across a 4 KB boundary, as bvb_lk_scratch_place puts it): 539,247 at 160x120 (11.5 per
- * window pixel and iteration against the bound's 3.5: 3.28x), 621,493 at 320x240 (13.2:
- * 3.77x), 625,945 at 640x480 (13.3: 3.80x); the simulator's own count 507,743 / 594,073 /
- * 599,293. Before the copies (the scratch in SDRAM, the division by libgcc, the iteration
+ * across a 4 KB boundary, as bvb_lk_scratch_place puts it): 529,107 at 160x120 (11.2 per
+ * window pixel and iteration against the bound's 3.5: 3.21x), 609,403 at 320x240 (13.0:
+ * 3.70x), 613,725 at 640x480 (13.0: 3.73x); the simulator's own count 497,603 / 581,983 /
+ * 587,073. Before the copies (the scratch in SDRAM, the division by libgcc, the iteration
  * with its branches and unpaired frame accesses): 607,794 / 749,689 / 811,391 (sim 483,731 /
  * 575,038 / 581,091); before the driver's bit lengths by SIGNBITS: 617,443 / 761,874 /
  * 823,847; before the scratch layout below and the bit lengths by halving: 710,633 /
  * 869,867 / 934,317.
- * Where the rest goes (bfbench profile lk_track, 320x240): the iteration step 395k (930
- * iterations of 411 cycles against their 403 issues: the passes at their rates above, 292,
- * and some 110 of per-iteration work: the window's position and bounds, the weights, the
- * passes' set-up, the solve and the update; the horizontal pass's rows cost 19 for their 12
- * pair issues), the template step 92k (9k of it the dual loads of two Te rows in one
+ * Where the rest goes (bfbench profile lk_track, 320x240): the iteration step 383k (930
+ * iterations of 398 cycles against their 390 issues: the passes at their rates above, 284,
+ * and some 115 of per-iteration work: the window's position and bounds, the weights, the
+ * passes' set-up, the solve and the update; the horizontal pass's rows cost 18 for their 12
+ * pair issues), the template step 91k (9k of it the dual loads of two Te rows in one
  * sub-bank), the C driver 87k (its per-level bounds, the flat test and the inverse, the
  * copies' addresses; its code from SDRAM, 11k of instruction-cache fills) and the copies'
  * jobs on the core 44k (the slots re-addressed, the start, the waits). The iteration's dual
