@@ -483,7 +483,8 @@ static int32_t inside(int32_t q7x, int32_t q7y, int32_t hx, int32_t hy, int32_t 
  * template reads from prev (wx + 3 by wy + 3 from ix - hx - 1, iy - hy - 1, the start rounded
  * down to even so that every slot of one level keeps its alignment) and those around the
  * template position in next that its iterations read while they move by at most FETCH_MARGIN
- * pixels, clipped to the level; one step ahead, in two sets of buffers, on two jobs. */
+ * pixels, clipped to the level; one step ahead, in two sets of buffers (step s in set s & 1),
+ * each step's two transfers one job. */
 #define FETCH_MARGIN 4
 
 struct lk_fetch {

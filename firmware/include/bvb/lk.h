@@ -59,8 +59,8 @@
  * position when its level-0 template was unusable). scratch: BVB_LK_SCRATCH_BYTES, 4-byte
  * aligned, any contents; in L1 where memory DMA reaches, the assembly also keeps there the
  * copies of each level step's windows that it brings from SDRAM (bvb_lk_track_run's fetch,
- * below), when the window's arrays leave room; only speed depends on it. width, height >= 1 and <= 16384; feature coordinates within
- * +-16384 pixels. bvb_lk_pyramid: 1 <= levels <= BVB_LK_MAX_LEVELS (a level of zero size is
+ * below), when the window's arrays leave room; only speed depends on it. width, height >= 1
+ * and <= 16384; feature coordinates within +-16384 pixels. bvb_lk_pyramid: 1 <= levels <= BVB_LK_MAX_LEVELS (a level of zero size is
  * empty); pyr 4-byte aligned; its assembly reads the frame by aligned words (up to 3 bytes
  * either side of a row).
  *
