@@ -863,11 +863,11 @@ _bvb_hs_iterate_n_asm:
 #define HS_NMID    -20  /* phase-2 pairs with a pair after them: width / 2 - 1 */
 #define HS_ODD     -24  /* width & 1 */
 /* The streamed path's (bvb/stream.h) */
-#define HS_ST      -28  /* the stream's state: scratch + 8 width, after the two sum rows */
-#define HS_TOP     -32  /* pass-A data of the row above the next output row */
-#define HS_NXT     -36  /* the sum row that takes the row below a band's last */
+#define HS_ST      -28  /* the stream's state: scratch + BVB_HS_PREP_MAIN(width) */
+#define HS_TOP     -32  /* the sum row with pass A of the output row's frame row */
+#define HS_ROW0    -36  /* frame 1's row 0 in L1 */
 #define HS_CSUM    -40  /* the two sum rows' addresses added (the other = CSUM - one) */
-#define HS_END     -44  /* the band's output rows end */
+#define HS_N       -44  /* band 0's rows */
 #define HS_ALPHA   -48  /* alpha2_q4, clamped (A1 again after each stream call) */
 #define HS_F1      -52  /* the arguments in registers */
 #define HS_F2      -56
@@ -875,7 +875,9 @@ _bvb_hs_iterate_n_asm:
 #define HS_W       -64  /* width */
 #define HS_XFER    -88  /* the last row's transfer (struct bvb_dma_xfer) */
 #define HS_JOB     -200 /* and its DMA job (BVB_DMA_JOB_BYTES) */
-#define HS_FRAME   212  /* locals at FP-200..-1, the C calls' 12 bytes of arguments below */
+#define HS_PRE     -248 /* the table's and row 0's transfers, on band 0's job (2 x 24 bytes) */
+#define HS_PREP_L1_BUDGET 24576 /* BVB_HS_PREP_L1_BUDGET (bvb/hornschunck.h is C only) */
+#define HS_FRAME   264  /* locals at FP-248..-1, the C calls' 16 bytes of arguments below */
 
 /* Pass A: per-row frame sums and differences of one row of both frames, r = I2 + I1 and
  * n = I2 - I1 per column, into the row's coefficient area: per group of 4 columns the words
@@ -1349,17 +1351,72 @@ _bvb_hs_prepare_asm:
  * the stream has sent it, and leaves by one DMA transfer. */
 .Lps_stream:
 	[--sp] = rets;
-	/* the sum rows at the scratch's start, the stream's state after them */
+	/* The layout (bvb/hornschunck.h, BVB_HS_PREPARE_SCRATCH_BYTES): sum row 0 at the start,
+	 * sum row 1 at the next 4 KB past it (4 width rounded up), the table and frame 1's row 0
+	 * after it, the stream from the 4 KB boundary after those. */
 	r0 = [fp + 64];
 	r1 = [fp + HS_W4];
-	r2 = r0 + r1;
-	[fp + HS_NXT] = r2;
-	r2 = r2 + r0;
-	[fp + HS_CSUM] = r2;
 	[fp + HS_TOP] = r0;
-	r1 = r1 << 1;
-	r0 = r0 + r1;
+	r2 = 4095;
+	r3 = r1 + r2;
+	r2 = ~r2;
+	r3 = r3 & r2;                   /* SUM1 */
+	r4 = r0 + r3;
+	r5 = r0 + r4;
+	[fp + HS_CSUM] = r5;
+	r4 = r4 + r1;                   /* the table */
+	[fp + HS_PRE + DMAX_DST] = r4;
+	r5 = 1536 (x);
+	r4 = r4 + r5;                   /* frame 1's row 0 */
+	[fp + HS_ROW0] = r4;
+	[fp + HS_PRE + 24 + DMAX_DST] = r4;
+	[fp + HS_PRE + DMAX_SS] = r5;
+	[fp + HS_PRE + DMAX_DS] = r5;
+	[fp + HS_PRE + DMAX_W] = r5;
+	r5 = 1;
+	[fp + HS_PRE + DMAX_ROWS] = r5;
+	[fp + HS_PRE + 24 + DMAX_ROWS] = r5;
+	r5.l = _bvb_hs_rsqrt_table;
+	r5.h = _bvb_hs_rsqrt_table;
+	[fp + HS_PRE + DMAX_SRC] = r5;
+	r5 = [fp + HS_F1];
+	[fp + HS_PRE + 24 + DMAX_SRC] = r5;
+	r5 = [fp + HS_W];
+	[fp + HS_PRE + 24 + DMAX_SS] = r5;
+	[fp + HS_PRE + 24 + DMAX_DS] = r5;
+	[fp + HS_PRE + 24 + DMAX_W] = r5;
+	r5 += 3;
+	r2 = -4;
+	r5 = r5 & r2;                   /* its bytes, rounded to words */
+	r4 = r4 - r0;
+	r4 = r4 + r5;
+	r2 = 4095;
+	r4 = r4 + r2;
+	r2 = ~r2;
+	r4 = r4 & r2;                   /* MAIN (the rounding of the row's 4 bytes is inside it) */
+	r0 = r0 + r4;
 	[fp + HS_ST] = r0;
+	/* Band rows: (budget - MAIN - state - 24) / (2 (2 width + pitch)), 1 to 16. */
+	r2 = HS_PREP_L1_BUDGET - BVB_STREAM_STATE_BYTES - 24 (x);
+	r2 = r2 - r4;
+	r5 = [fp + HS_W];
+	r5 = r5 << 1;
+	r3 = [fp + HS_PITCH];
+	r5 = r5 + r3;
+	r5 = r5 << 1;
+	r6 = 0;
+	r3 = r5;
+	r7 = BVB_STREAM_MAX_BAND;
+.Lps_fit:
+	cc = r2 < r3;
+	if cc jump .Lps_fitted;
+	r6 += 1;
+	r3 = r3 + r5;
+	cc = r6 < r7;
+	if cc jump .Lps_fit (bp);
+.Lps_fitted:
+	r7 = 1;
+	r6 = max (r6, r7);
 	p0 = r0;
 	r2 = [fp + 52];                 /* stride */
 	r1 = [fp + HS_F1];
@@ -1381,16 +1438,32 @@ _bvb_hs_prepare_asm:
 	r1 = [fp + 48];
 	r1 += -1;
 	[p0 + ST_ROWS] = r1;
-	call _bvb_stream_open;
+	r1 = 2;
+	[sp + 12] = r1;
+	r1 = r6;
+	r2 = fp;
+	r3 = HS_PRE (x);
+	r2 = r2 + r3;
+	call _bvb_stream_open_rows;
 	cc = r0 == 0;
 	if cc jump .Lps_open;
 	jump.l .Lps_ret;
 .Lps_open:
-	/* Pass A of frame row 0, straight from the frames, into the first sum row. */
-	r0 = [fp + HS_F1];
+	/* The table from L1 from here on (P5: its address - 512, as in the direct path). */
+	r0 = [fp + HS_ROW0];
+	r1 = -(1536 + 512) (x);
+	r0 = r0 + r1;
+	p5 = r0;
+	r0 = [fp + HS_ST];
+	call _bvb_stream_next;          /* band 0, the table and row 0 are in */
+	[fp + HS_N] = r0;
+	/* Pass A of frame row 0 (frame 1's from L1, frame 2's from where it is) into sum row 0. */
+	r0 = [fp + HS_ROW0];
 	r1 = [fp + HS_F2];
 	p0 = [fp + HS_TOP];
 	HS_PASS_A 3
+	r0 = [fp + HS_N];
+	jump .Lps_more;
 .Lps_band:
 	r0 = [fp + HS_ST];
 	call _bvb_stream_next;
@@ -1406,22 +1479,14 @@ _bvb_hs_prepare_asm:
 	b2 = r1;
 	r1 = [p0 + ST_OUT];
 	b0 = r1;
-	r2 = [fp + HS_PITCH];
-	r0 *= r2;
-	r0 = r0 + r1;
-	[fp + HS_END] = r0;
 	r1 = [fp + HS_ALPHA];
 	a1 = r1;
 	lsetup (.Lps_row, .Lps_row_end) lc1;
 .Lps_row:
-	/* Pass A of the band row (frame row y + 1): into output row y + 1's area, or the sum row */
-	r0 = b0;
-	r1 = [fp + HS_PITCH];
-	r0 = r0 + r1;
-	r1 = [fp + HS_END];
-	cc = r0 == r1;
-	r1 = [fp + HS_NXT];
-	if cc r0 = r1;
+	/* Pass A of the band row (frame row y + 1) into the sum row TOP is not */
+	r0 = [fp + HS_CSUM];
+	r1 = [fp + HS_TOP];
+	r0 = r0 - r1;
 	[fp + HS_DEST] = r0;
 	p0 = r0;
 	r0 = b1;
@@ -1454,11 +1519,6 @@ _bvb_hs_prepare_asm:
 	r0 = r0 + r1;
 .Lps_row_end:
 	b2 = r0;
-	/* The sum row just filled starts the next band; the other takes its last row's. */
-	r0 = [fp + HS_CSUM];
-	r1 = [fp + HS_TOP];
-	r0 = r0 - r1;
-	[fp + HS_NXT] = r0;
 	jump.l .Lps_band;
 .Lps_last:
 	/* Row h-1: pass B of TOP with itself, into the last band's output buffer (sent). */

@@ -83,12 +83,13 @@ static L1TEXT void run(struct bvb_stream *st, int32_t j, int32_t slots) {
   }
 }
 
-L1TEXT int32_t bvb_stream_open(struct bvb_stream *st) {
+/* Open with bands of b rows; pre[0 .. npre-1] ride at the front of band 0's job. */
+static L1TEXT __attribute__((noinline)) int32_t open_b(struct bvb_stream *st, int32_t b,
+                                                       const struct bvb_dma_xfer *pre, int32_t npre) {
   const int32_t nin = st->src_bytes[1] > 0 ? 2 : 1, out = st->dst_bytes > 0;
-  const int32_t rb = st->src_bytes[0] + (nin > 1 ? st->src_bytes[1] : 0) + (out ? st->dst_bytes : 0);
   if (st->src_bytes[0] <= 0 || st->rows <= 0 || in_sdram(st) ||
-      !bvb_dma_reachable(st, BVB_STREAM_SCRATCH_BYTES(st->src_bytes[0], nin > 1 ? st->src_bytes[1] : 0,
-                                                      out ? st->dst_bytes : 0)))
+      !bvb_dma_reachable(st, BVB_STREAM_SCRATCH_BYTES_B(b, st->src_bytes[0], nin > 1 ? st->src_bytes[1] : 0,
+                                                        out ? st->dst_bytes : 0)))
     return -1;
   int32_t any_sdram = 0;
   for (int32_t p = 0; p < nin; ++p) {
@@ -103,7 +104,6 @@ L1TEXT int32_t bvb_stream_open(struct bvb_stream *st) {
   if (nin == 1) st->src_bytes[1] = 0;
   if (!out) st->dst_bytes = 0;
 
-  const int32_t b = band_rows(rb);
   st->band_rows = b;
   uint8_t *m = (uint8_t *)(st + 1);
   for (int32_t par = 0; par < 2; ++par) {
@@ -117,12 +117,14 @@ L1TEXT int32_t bvb_stream_open(struct bvb_stream *st) {
   for (int32_t j = 0; j < 2; ++j)
     for (int32_t s = 0; s < BVB_DMA_MAX_XFERS; ++s) st->key[j][s] = -1;
 
-  /* Band 0 in, on job 1 (bvb_stream_next builds band k's job in job k & 1 while job
-   * (k - 1) & 1 runs); then the output's largest shape once, on slot 0 of job 0 (prepared again
-   * for band 1; later bands only shrink and move by whole rows). What DMA refuses here,
-   * the direct path does instead. */
+  /* Band 0 in (after the caller's transfers), on job 1 (bvb_stream_next builds band k's job in
+   * job k & 1 while job (k - 1) & 1 runs); then the output's largest shape once, on slot 0 of
+   * job 0 (prepared again for band 1; later bands only shrink and move by whole rows). What
+   * DMA refuses here, the direct path does instead. */
   const int32_t n0 = st->rows < b ? st->rows : b;
   int32_t slot = 0;
+  for (; slot < npre; ++slot)
+    if (bvb_dma_prepare(st->job[1], slot, &pre[slot]) != 0) return -1;
   for (int32_t kind = K_IN0; kind <= nin; ++kind) {
     xfer(st, kind, 0, n0, 0);
     if (bvb_dma_prepare(st->job[1], slot, &st->x) != 0) return -1;
@@ -142,6 +144,18 @@ L1TEXT int32_t bvb_stream_open(struct bvb_stream *st) {
   st->fly_row = 0;
   st->fly_n = n0;
   return 0;
+}
+
+L1TEXT int32_t bvb_stream_open(struct bvb_stream *st) {
+  const int32_t rb = st->src_bytes[0] + (st->src_bytes[1] > 0 ? st->src_bytes[1] : 0) +
+                     (st->dst_bytes > 0 ? st->dst_bytes : 0);
+  return open_b(st, band_rows(rb), 0, 0);
+}
+
+L1TEXT int32_t bvb_stream_open_rows(struct bvb_stream *st, int32_t rows, const struct bvb_dma_xfer *pre,
+                                    int32_t npre) {
+  if (rows < 1 || rows > BVB_STREAM_MAX_BAND || npre < 0 || npre > BVB_DMA_MAX_XFERS - 2) return -1;
+  return open_b(st, rows, pre, npre);
 }
 
 L1TEXT int32_t bvb_stream_next(struct bvb_stream *st) {
