@@ -1465,7 +1465,14 @@ _bvb_hs_prepare_asm:
 	r0 = [fp + HS_N];
 	jump .Lps_more;
 .Lps_band:
-	r0 = [fp + HS_ST];
+	/* After the last band the kernel finishes the stream itself (.Lps_last). */
+	p0 = [fp + HS_ST];
+	r0 = [p0 + ST_FLY_N];
+	cc = r0 == 0;
+	if !cc jump .Lps_next;
+	jump.l .Lps_last;
+.Lps_next:
+	r0 = p0;
 	call _bvb_stream_next;
 	cc = r0 == 0;
 	if !cc jump .Lps_more;
@@ -1521,9 +1528,28 @@ _bvb_hs_prepare_asm:
 	b2 = r0;
 	jump.l .Lps_band;
 .Lps_last:
-	/* Row h-1: pass B of TOP with itself, into the last band's output buffer (sent). */
+	/* The last band: once the band before's output is out, its own leaves while row h-1 (pass
+	 * B of TOP with itself) is made in the other output buffer, which then leaves too. */
 	p0 = [fp + HS_ST];
-	p3 = [p0 + ST_OUT];
+	r0 = [p0 + ST_RUNNING];
+	cc = r0 == 0;
+	if cc jump .Lps_idle;
+	call _bvb_dma_wait;
+.Lps_idle:
+	p0 = [fp + HS_ST];
+	r0 = [p0 + ST_OUT];
+	r1 = [p0 + ST_CUR_ROW];
+	r2 = [p0 + ST_CUR_N];
+	call .Lps_send;
+	[fp + HS_N] = r0;
+	p0 = [fp + HS_ST];
+	r0 = [p0 + ST_BUF_OUT];
+	r1 = [p0 + ST_BUF_OUT + 4];
+	r0 = r0 + r1;
+	r1 = [p0 + ST_OUT];
+	r0 = r0 - r1;
+	[fp + HS_DEST] = r0;
+	p3 = r0;
 	r0 = [fp + HS_TOP];
 	i2 = r0;
 	i3 = r0;
@@ -1535,25 +1561,39 @@ _bvb_hs_prepare_asm:
 	HS_PASS_B 4
 	r1 = [fp + HS_ALPHA];
 	a1 = r1;
-	p0 = [fp + HS_ST];
-	p3 = [p0 + ST_OUT];
+	p3 = [fp + HS_DEST];
 	HS_PHASE2 4
-	/* ... and out to coefficient row h-1 */
-	p0 = [fp + HS_ST];
-	r0 = [p0 + ST_OUT];
+	r0 = [fp + HS_N];
+	cc = r0 == 0;
+	if cc jump .Lps_sent;
+	call _bvb_dma_wait;
+.Lps_sent:
+	r0 = [fp + HS_DEST];
+	r1 = [fp + 48];
+	r1 += -1;
+	r2 = 1;
+	call .Lps_send;
+	cc = r0 == 0;
+	if cc jump .Lps_ret;
+	call _bvb_dma_wait;
+	r0 = 0;
+	jump .Lps_ret;
+
+/* R2 rows from R0 (L1) to coefficient row R1 on, by one DMA job, started (R0 = 1: wait for it),
+ * or by the core where DMA refuses (R0 = 0; none should: both blocks are where the stream's
+ * were). */
+.Lps_send:
+	[--sp] = rets;
 	[fp + HS_XFER + DMAX_SRC] = r0;
-	r1 = [fp + HS_PITCH];
-	[fp + HS_XFER + DMAX_SS] = r1;
-	[fp + HS_XFER + DMAX_DS] = r1;
-	[fp + HS_XFER + DMAX_W] = r1;
-	r2 = [fp + 48];
-	r2 += -1;
-	r2 *= r1;
+	[fp + HS_XFER + DMAX_ROWS] = r2;
+	r0 = [fp + HS_PITCH];
+	[fp + HS_XFER + DMAX_SS] = r0;
+	[fp + HS_XFER + DMAX_DS] = r0;
+	[fp + HS_XFER + DMAX_W] = r0;
+	r1 *= r0;
 	r0 = [fp + 60];
-	r0 = r0 + r2;
+	r0 = r0 + r1;
 	[fp + HS_XFER + DMAX_DST] = r0;
-	r0 = 1;
-	[fp + HS_XFER + DMAX_ROWS] = r0;
 	r0 = fp;
 	r1 = HS_JOB (x);
 	r0 = r0 + r1;
@@ -1569,21 +1609,25 @@ _bvb_hs_prepare_asm:
 	r0 = r0 + r1;
 	r1 = 1;
 	call _bvb_dma_start;
-	call _bvb_dma_wait;
-	r0 = 0;
-	jump .Lps_ret;
+	r0 = 1;
+	rets = [sp++];
+	rts;
 .Lps_copy:
-	/* what DMA refuses (none should: both blocks are where the stream's were), by the core */
 	p0 = [fp + HS_XFER + DMAX_SRC];
 	p1 = [fp + HS_XFER + DMAX_DST];
-	p2 = [fp + HS_PITCH];
-	p2 = p2 >> 2;
+	r0 = [fp + HS_XFER + DMAX_ROWS];
+	r1 = [fp + HS_PITCH];
+	r0 *= r1;
+	r0 >>= 2;
+	p2 = r0;
 	lsetup (.Lps_cp, .Lps_cp_end) lc0 = p2;
 .Lps_cp:
 	r0 = [p0++];
 .Lps_cp_end:
 	[p1++] = r0;
 	r0 = 0;
+	rets = [sp++];
+	rts;
 .Lps_ret:
 	rets = [sp++];
 	rts;

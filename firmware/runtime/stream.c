@@ -17,6 +17,11 @@ AT(dst_bytes, 32);
 AT(rows, 36);
 AT(in, 40);
 AT(out, 48);
+AT(cur_row, 60);
+AT(cur_n, 64);
+AT(fly_n, 72);
+AT(running, 76);
+AT(buf_out, 96);
 typedef char check_size[sizeof(struct bvb_stream) == BVB_STREAM_STATE_BYTES ? 1 : -1];
 
 enum { K_OUT = 0, K_IN0 = 1, K_IN1 = 2 };

@@ -132,6 +132,12 @@ int32_t bvb_stream_next(struct bvb_stream *st);
 #define ST_IN0 40
 #define ST_IN1 44
 #define ST_OUT 48
+/* the stream's own, for a kernel that sends its last band itself */
+#define ST_CUR_ROW 60
+#define ST_CUR_N 64
+#define ST_FLY_N 72
+#define ST_RUNNING 76
+#define ST_BUF_OUT 96
 #endif
 
 #endif
