@@ -64,7 +64,7 @@ static L1TEXT void core_copy(const struct bvb_dma_xfer *x) {
 }
 
 /* Slot *slot of job j: st->x, re-addressed when the slot was last prepared for this shape. */
-static L1TEXT void add(struct bvb_stream *st, int32_t j, int32_t *slot, int32_t kind) {
+static inline __attribute__((always_inline)) void add(struct bvb_stream *st, int32_t j, int32_t *slot, int32_t kind) {
   const int32_t key = st->x.rows * 4 + kind;
   int32_t *k = &st->key[j][*slot];
   if (*k == key) {
