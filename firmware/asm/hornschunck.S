@@ -26,20 +26,25 @@
  *   coefficients and flow in SDRAM through the data cache, as the bench places them:
  *                    160x120               320x240
  *   hs_iterate     1,195,196  (62.25)    4,669,482  (60.80)    bound 10 (bus 28)
- *   hs_prepare       410,030  (21.36)    1,504,833  (19.59)    bound 17 (bus 16)
+ *   hs_prepare       378,006  (19.69)    1,410,741  (18.37)    bound 17 (bus 16)
  *   hornschunck   13,226,105 (688.9)    52,997,199 (690.1)     bound 118, N = 10
  *   (hs_iterate and hornschunck: 2,250 to 2,850 cycles an iteration more than before their rows
  *   became calls of the shared row routine, ROWS below: the call and return, 10 cycles a row,
  *   and at 160 wide the entry's two jumps; the simulator's counts below are those of before.)
  *   hs_prepare streams its rows through L1 (the scratch in L1 bank B; STREAMED PATH below):
- *   640x480 5,804,772 (18.90). Its simulator counts are 370,510 and 1,432,760 against the
- *   343,133 and 1,339,013 of the same code on data in L1 (below): the 27k / 94k between them
- *   are the stream's per-band work (bvb_stream_next building and starting each job, 30 bands
- *   of 4 rows at 160 wide, 120 of 2 at 320: 700 to 900 cycles a band with the band loop's
- *   set-up), frame row 0 read straight from SDRAM and the last row's transfer; the model adds
- *   39k / 72k (waiting for band 0 and for the last band's output, the MMR accesses, the rsqrt
- *   table's line fills). Bus time is 16 c/px (2 bytes in, 6 out at 0.5 byte a cycle), under
- *   the compute, so the transfers hide; wider bands would halve the per-band cost.
+ *   640x480 5,608,612 (18.26). Target 18.5 c/px at 320x240 (1,420,800). Its simulator counts
+ *   are 359,865 and 1,389,435. Where the 320x240 call's 1,410,741 go (bfbench profile
+ *   hs_prepare), against the bound's 1,305,600: the three passes 1,333,278 (5,560 a row against
+ *   the bound's 5,440: each pass at its issue bound, about 120 a row of set-up, pass A's
+ *   alignment most of it); the stream's per-band work 47,600 (bvb_stream_next building and
+ *   starting each job, 80 bands of 3 rows: some 590 cycles a band); waiting for DMA 15,500
+ *   (band 0 with the table and row 0, 3,776 bytes, before anything can start, and the last
+ *   band's and row h-1's output at the end: the bus's 16 c/px are just under the compute, so
+ *   what is left to send after the last row cannot hide); frame 2's row 0 through the data
+ *   cache 2,100; the rest the band loop, the calls and the MMR accesses. No sub-bank
+ *   collisions are left in the loops (the layout, STREAMED PATH); 398 in pass A's first two
+ *   dual loads of a row, of the two frames' band rows (one sub-bank when they are close). Before this layout (in-place sums, bands of 2, the table through the
+ *   cache): 1,505,044, of which 48,440 collisions and 10,859 line fills.
  *   Before the stream (frames through the data cache): 1,169,693 (60.92) and 4,635,194
  *   (60.35); where those went (the same calls with one charge of the model turned off):
  *   hs_prepare at 160x120: 343,133 issued (the simulator's own count), 607 address-register
@@ -88,12 +93,19 @@
  * STREAMED PATH (bvb_hs_prepare_asm with a scratch in L1 and a frame or the coefficients in
  *   SDRAM): the row-band stream (bvb/stream.h) brings rows 1..h-1 of both frames into L1 and
  *   sends coefficient rows 0..h-2 out, band by band, while the band before is computed: output
- *   row y needs frame rows y and y+1, so each band row is the lower row of its output row and
- *   the pass-A sums of the row above a band's first live in one of two sum rows of the scratch
- *   (frame row 0's read straight from SDRAM). Row h-1 is made after the stream, in its last
- *   output buffer, and leaves by one DMA transfer. Where the stream refuses (the scratch not in
- *   DMA-reachable L1, every buffer in L1), the direct path below.
- *
+ *   row y needs frame rows y and y+1, so each band row is the lower row of its output row.
+ *   Pass A of every frame row goes to one of two sum rows, alternately, and pass B reads both
+ *   and writes the output row in the band; phase 2 works in place there. The scratch's layout
+ *   (bvb/hornschunck.h, BVB_HS_PREPARE_SCRATCH_BYTES) keeps the accesses each loop issues
+ *   together in different 4 KB sub-banks when the scratch starts at a 4 KB boundary (as the
+ *   bench places it): the sum rows each in a sub-bank of their own (pass B's dual loads of
+ *   both, pass A's stores against its frame loads, pass B's stores against its loads), the
+ *   stream's bands in the sub-banks after them, the count table in bank A. The bands are as
+ *   many rows as fit L1 bank B beside the stack (3 at 320 wide: 80 bands; bvb_stream_open_rows).
+ *   The rsqrt table and frame 1's row 0 come in by DMA on band 0's job (frame 2's row 0 is
+ *   read where it is). After the last band the kernel sends that band's output itself and
+ *   makes row h-1 in the other output buffer meanwhile, then sends it. Where the stream
+ *   refuses (the scratch not in DMA-reachable L1, every buffer in L1), the direct path below.
  * MEMORY. The kernels work wherever the caller puts the buffers. At the robot's sizes frames,
  *   coefficients and flow live in SDRAM (working set 14 bytes per pixel: 263 KB at 160x120, past
  *   the 64 KB of L1 data); the bench places them there. The simulator's own counts are those of
@@ -101,7 +113,8 @@
  *   through the cache (one iteration alone is bus-bound: 28 cycles a pixel for its 14 bytes);
  *   bvb_hs_iterate_n_asm fuses the iterations over L1 rings (FUSED ITERATIONS above); the
  *   hornschunck driver would need an L1 scratch beside its frame-sized one to call it. The count
- *   table is in L1 data bank A; the rsqrt table is the C reference's (.rodata).
+ *   table is in L1 data bank A; the rsqrt table is the C reference's (.rodata), read there by
+ *   the direct path and copied into the scratch by the streamed one.
  *
  * ROWS. One routine makes an output row (HS_PIX0, then the loop of HS_PIX, then the last pixel)
  *   for both iteration kernels: L1 instruction memory has no room for a copy per kernel.
