@@ -27,13 +27,13 @@
  *                    160x120               320x240
  *   hs_iterate     1,195,196  (62.25)    4,669,482  (60.80)    bound 10 (bus 28)
  *   hs_prepare       378,006  (19.69)    1,410,741  (18.37)    bound 17 (bus 16)
- *   hornschunck    2,609,790 (135.9)     9,710,072 (126.4)     bound 117, N = 10
+ *   hornschunck    2,577,927 (134.3)     9,615,769 (125.2)     bound 117, N = 10
  *   (hs_iterate: 2,250 to 2,850 cycles an iteration more than before its rows became calls of
  *   the shared row routine, ROWS below: the call and return, 10 cycles a row, and at 160 wide
  *   the entry's two jumps; the simulator's counts below are those of before.) hornschunck is
  *   prepare streamed through its flow-row scratch (L1 bank B) and one bvb_hs_iterate_n_asm
- *   from a zero row read with stride 0: 1.08x its bound of 17 + 10 N at 320x240, 1.16x at 160
- *   (hs_iterate_n's per-row cost over half the pixels, prepare's 21.4); before, the iterations
+ *   from a zero row read with stride 0: 1.07x its bound of 17 + 10 N at 320x240, 1.15x at 160
+ *   (hs_iterate_n's per-row cost over half the pixels, prepare's 19.7); before, the iterations
  *   were N bvb_hs_iterate_asm calls through the data cache and a zeroed frame of start flow:
  *   13,226,105 and 52,997,199.
  *   hs_prepare streams its rows through L1 (the scratch in L1 bank B; STREAMED PATH below):
