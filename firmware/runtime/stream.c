@@ -26,10 +26,11 @@ typedef char check_size[sizeof(struct bvb_stream) == BVB_STREAM_STATE_BYTES ? 1 
 
 enum { K_OUT = 0, K_IN0 = 1, K_IN1 = 2 };
 
-/* BVB_STREAM_BAND_ROWS(rb) without a division (libgcc's is in SDRAM). */
+/* BVB_STREAM_BAND_ROWS(rb) without a division (libgcc's is in SDRAM). Every count is tried,
+ * with no early exit: a hardware loop left early would return with LC1 non-zero. */
 static L1TEXT int32_t band_rows(int32_t rb) {
   int32_t b = 1;
-  while (b < BVB_STREAM_MAX_BAND && (b + 1) * rb <= BVB_STREAM_BAND_BYTES) ++b;
+  for (int32_t i = 2; i <= BVB_STREAM_MAX_BAND; ++i) b = i * rb <= BVB_STREAM_BAND_BYTES ? i : b;
   return b;
 }
 

@@ -42,9 +42,9 @@
  * and 7 per descriptor (2 per transfer). The core's per band, in bvb_stream_next: building the
  * job (moves), the wait, the start: a few hundred cycles, hidden when the kernel is bus-bound.
  *
- * Loop registers: bvb_stream_open may return with LC1 non-zero (GCC's hardware loop of its
- * band-row search, left early); a caller sets up its own loops before using them, as LSETUP
- * does. bvb_stream_open_rows does not run that search.
+ * Loop registers: every hardware loop of the stream's routines runs to its end, so none is left
+ * armed (LC0, LC1 are as a finished loop leaves them); bvb_stream_open's band-row search tries
+ * every count for that, where leaving its loop early returned with LC1 non-zero.
  *
  * Calling from assembly: C ABI (the routines are C, in L1 instruction SRAM, firmware/runtime/stream.c):
  * R0-R3, P0-P2, I0-I3, M0-M3, B0-B3, L0-L3 (which must be 0 at the call), A0, A1, LC0/1,
