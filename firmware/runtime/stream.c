@@ -64,8 +64,11 @@ static L1TEXT void core_copy(const struct bvb_dma_xfer *x) {
     for (int32_t i = 0; i < x->width; ++i) d[i] = s[i];
 }
 
-/* Slot *slot of job j: st->x, re-addressed when the slot was last prepared for this shape. */
-static inline __attribute__((always_inline)) void add(struct bvb_stream *st, int32_t j, int32_t *slot, int32_t kind) {
+/* Slot *slot of job j: st->x, re-addressed when the slot was last prepared for this shape.
+ * Inlined into its two callers: as a call, its register saves and returns cost some 40 cycles
+ * a transfer, three transfers a band. */
+static inline __attribute__((always_inline)) void add(struct bvb_stream *st, int32_t j,
+                                                      int32_t *slot, int32_t kind) {
   const int32_t key = st->x.rows * 4 + kind;
   int32_t *k = &st->key[j][*slot];
   if (*k == key) {
