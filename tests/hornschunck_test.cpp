@@ -184,7 +184,7 @@ TEST(HornSchunckIterate, AverageWeightsAndTiesToEven) {
         }
       }
     }
-    bvb_hs_iterate_c(coef.data(), in, 12, out, 12, 3, 3);
+    bvb_hs_iterate_c(coef.data(), in, 12, out, 12, 3, 3, nullptr, nullptr);
     for (int c = 0; c < 2; ++c) {
       auto at = [&](int x, int y) { return int64_t(in[2 * (y * 3 + x) + c]); };
       const int64_t diag = at(0, 0) + at(2, 0) + at(0, 2) + at(2, 2);
@@ -299,7 +299,7 @@ TEST(HornSchunckFlow, ConvenienceFunctionEqualsPrepareAndIterations) {
   for (int n = 0; n <= 5; ++n) {
     const FixedFlow f = run_fixed(a, b, kAlpha2, n);
     EXPECT_EQ(f.uv, cur) << n << " iterations";
-    bvb_hs_iterate_c(coef.data(), cur.data(), 4 * w, next.data(), 4 * w, w, h);
+    bvb_hs_iterate_c(coef.data(), cur.data(), 4 * w, next.data(), 4 * w, w, h, nullptr, nullptr);
     cur.swap(next);
   }
 }
@@ -324,7 +324,7 @@ TEST(HornSchunckIterate, IterateNEqualsPingPongedIterations) {
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < 2 * w; ++x) cur[size_t(y) * 2 * w + x] = in[size_t(y) * (is / 2) + x];
       for (int k = 0; k < n; ++k) {
-        bvb_hs_iterate_c(coef.data(), cur.data(), 4 * w, next.data(), 4 * w, w, h);
+        bvb_hs_iterate_c(coef.data(), cur.data(), 4 * w, next.data(), 4 * w, w, h, nullptr, nullptr);
         cur.swap(next);
       }
       std::vector<int16_t> out(size_t(os / 2) * h, int16_t(0x1234));

@@ -25,12 +25,15 @@
  *   reference built with bfin-elf-gcc -O2). Modelled BF537 cycles (--timing bf537), frames,
  *   coefficients and flow in SDRAM through the data cache, as the bench places them:
  *                    160x120               320x240
- *   hs_iterate     1,195,196  (62.25)    4,669,482  (60.80)    bound 10 (bus 28)
+ *   hs_iterate       616,456  (32.11)    2,307,931  (30.05)    bound 28 (the bus; compute 10)
  *   hs_prepare       378,006  (19.69)    1,410,741  (18.37)    bound 17 (bus 16)
  *   hornschunck    2,577,927 (134.3)     9,615,769 (125.2)     bound 117, N = 10
- *   (hs_iterate: 2,250 to 2,850 cycles an iteration more than before its rows became calls of
- *   the shared row routine, ROWS below: the call and return, 10 cycles a row, and at 160 wide
- *   the entry's two jumps; the simulator's counts below are those of before.) hornschunck is
+ *   hs_iterate with its two L1 scratches is bvb_hs_iterate_n_asm's one level (bus-bound: 1.07x
+ *   at 320x240, 1.15x at 160, the per-row cost over half the pixels); before, through the data
+ *   cache, 1,195,196 (62.25) and 4,669,482 (60.80). (Its direct path: 2,250 to 2,850 cycles an
+ *   iteration more than before its rows became calls of the shared row routine, ROWS below: the
+ *   call and return, 10 cycles a row, and at 160 wide the entry's two jumps; the simulator's
+ *   counts below are those of before.) hornschunck is
  *   prepare streamed through its flow-row scratch (L1 bank B) and one bvb_hs_iterate_n_asm
  *   from a zero row read with stride 0: 1.07x its bound of 17 + 10 N at 320x240, 1.15x at 160
  *   (hs_iterate_n's per-row cost over half the pixels, prepare's 19.7); before, the iterations
@@ -133,7 +136,9 @@
  */
 
 /* ---------------------------------------------------------------------------------------------
- * bvb_hs_iterate_asm(coef, uv_in, in_stride, uv_out, out_stride, width, height)
+ * bvb_hs_iterate_asm(coef, uv_in, in_stride, uv_out, out_stride, width, height, flow_scratch,
+ *                    coef_scratch): with the scratches, bvb_hs_iterate_n_asm's one iteration
+ * (streamed); without, the direct path below on the buffers where they are.
  * --------------------------------------------------------------------------------------------- */
 
 /* One interior pixel. Column sums cl = ra, c0 = rb (carried), cr = rc (computed here); on entry
@@ -256,6 +261,32 @@
 	.global _bvb_hs_iterate_asm
 	.type _bvb_hs_iterate_asm, STT_FUNC
 _bvb_hs_iterate_asm:
+	/* With the two scratches (arguments 8 and 9), one iteration of bvb_hs_iterate_n_asm: its
+	 * rows by DMA through them where it reaches. Arguments 4-9 at SP + 12..32 on entry. */
+	r3 = [sp + 28];
+	cc = r3 == 0;
+	if cc jump .Lit_direct;
+	[--sp] = rets;
+	sp += -40;
+	r3 = [sp + 56];                  /* uv_out */
+	[sp + 12] = r3;
+	r3 = [sp + 60];                  /* out_stride */
+	[sp + 16] = r3;
+	r3 = [sp + 64];                  /* width */
+	[sp + 20] = r3;
+	r3 = [sp + 68];                  /* height */
+	[sp + 24] = r3;
+	r3 = 1;                          /* one iteration */
+	[sp + 28] = r3;
+	r3 = [sp + 72];                  /* flow_scratch */
+	[sp + 32] = r3;
+	r3 = [sp + 76];                  /* coef_scratch */
+	[sp + 36] = r3;
+	call _bvb_hs_iterate_n_asm;
+	sp += 40;
+	rets = [sp++];
+	rts;
+.Lit_direct:
 	[--sp] = (r7:4, p5:3);
 	[--sp] = fp;
 	[--sp] = rets;                  /* the rows are calls */

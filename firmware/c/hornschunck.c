@@ -189,8 +189,11 @@ static void iterate_row(const int16_t *top, const int16_t *mid, const int16_t *b
 }
 
 void bvb_hs_iterate_c(const int16_t *coef, const int16_t *uv_in, int32_t in_stride,
-                      int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height) {
+                      int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height,
+                      void *flow_scratch, void *coef_scratch) {
   const int32_t pitch = BVB_HS_COEF_PITCH(width);
+  (void)flow_scratch; /* the assembly's streamed path */
+  (void)coef_scratch;
   for (int32_t y = 0; y < height; ++y) {
     const int32_t ym = y > 0 ? y - 1 : 0, yp = y + 1 < height ? y + 1 : height - 1;
     const int16_t *top = (const int16_t *)((const uint8_t *)uv_in + ym * in_stride);
@@ -215,7 +218,7 @@ void bvb_hs_iterate_n_c(const int16_t *coef, const int16_t *uv_in, int32_t in_st
   saved[0] = (int16_t *)flow_scratch;
   saved[1] = saved[0] + 2 * width;
   if (iterations < 1) return;
-  bvb_hs_iterate_c(coef, uv_in, in_stride, uv_out, out_stride, width, height);
+  bvb_hs_iterate_c(coef, uv_in, in_stride, uv_out, out_stride, width, height, 0, 0);
   for (int32_t n = 1; n < iterations; ++n) {
     int16_t *above = saved[0], *here = saved[1];
     for (int32_t x = 0; x < 2 * width; ++x) here[x] = uv_out[x];

@@ -250,8 +250,12 @@ CheckCall prepare_call(int w, int h, int stride, const FramePair &p, int32_t alp
   return c;
 }
 
+constexpr int kIterFlowScratch = 3, kIterCoefScratch = 4;
+
+// hs_iterate: with `scratches`, buffers 3 and 4 are the streamed path's (as hs_iterate_n's);
+// without, both arguments are NULL.
 CheckCall iterate_call(int w, int h, const std::vector<int16_t> &coef, const std::vector<int16_t> &uv,
-                       int in_stride, int out_stride, const std::string &name) {
+                       int in_stride, int out_stride, bool scratches, const std::string &name) {
   CheckCall c;
   c.kernel = "hs_iterate";
   c.case_name = name;
@@ -262,9 +266,19 @@ CheckCall iterate_call(int w, int h, const std::vector<int16_t> &coef, const std
   int iu = c.in("uv_in", as_bytes(uv), {2, true, 2 * w, h, in_stride / 2});
   int io = c.out("uv_out", size_t(out_stride) * (h - 1) + 4 * size_t(w), {2, true, 2 * w, h, out_stride / 2, 2});
   c.buf(ic).buf(iu).word(in_stride).buf(io).word(out_stride).word(w).word(h);
-  c.host = [=](HostBuffers &m) {
-    bvb_hs_iterate_c(m.s16(ic), m.s16(iu), in_stride, m.s16(io), out_stride, w, h);
-  };
+  if (scratches) {
+    int fs = c.scratch("flow_scratch", BVB_HS_ITER_FLOW_SCRATCH_BYTES(w));
+    int cs = c.scratch("coef_scratch", BVB_HS_ITER_COEF_SCRATCH_BYTES(w));
+    c.buf(fs).buf(cs);
+    c.host = [=](HostBuffers &m) {
+      bvb_hs_iterate_c(m.s16(ic), m.s16(iu), in_stride, m.s16(io), out_stride, w, h, m.u8(fs), m.u8(cs));
+    };
+  } else {
+    c.word(0).word(0);
+    c.host = [=](HostBuffers &m) {
+      bvb_hs_iterate_c(m.s16(ic), m.s16(iu), in_stride, m.s16(io), out_stride, w, h, nullptr, nullptr);
+    };
+  }
   return c;
 }
 
@@ -292,7 +306,6 @@ CheckCall iterate_n_call(int w, int h, const std::vector<int16_t> &coef, const s
   };
   return c;
 }
-constexpr int kIterFlowScratch = 3, kIterCoefScratch = 4;
 
 CheckCall full_call(int w, int h, int stride, const FramePair &p, int32_t alpha2, int iterations,
                     int out_stride, const std::string &name) {
@@ -398,10 +411,20 @@ void check(Checker &ck) {
         const std::vector<int16_t> coef = make_coef(s.w, s.h, rng, ck, &cn);
         const int is = flow_stride(s.w, rng), os = flow_stride(s.w, rng);
         const std::vector<int16_t> uv = make_flow(s.w, s.h, is, rng, &fn);
-        CheckCall c = iterate_call(s.w, s.h, coef, uv, is, os,
+        // A third without the scratches (the direct path), a third streamed as the robot
+        // would (frames in SDRAM, the scratches in L1 banks B and A), a third placed at random.
+        const int how = rng.uniform(0, 2);
+        CheckCall c = iterate_call(s.w, s.h, coef, uv, is, os, how != 0,
                                    size_name(s.w, s.h) + " strides " + std::to_string(is) + "/" +
                                        std::to_string(os) + " " + cn + " " + fn);
-        place(ck, c, rng);
+        if (how == 1) {
+          for (auto &b : c.bufs) b.skew = 0;
+          c.bufs[kIterFlowScratch].place = BVB_PLACE_L1B;
+          c.bufs[kIterCoefScratch].place = BVB_PLACE_L1A;
+          c.case_name += " frames SDRAM";
+        } else {
+          place(ck, c, rng);
+        }
         ck.add(std::move(c));
       }
   }
@@ -480,7 +503,10 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
     bvb_hs_prepare_c(p.f1.data(), p.f2.data(), w, h, w, 1024, coef.data(), nullptr);
     std::vector<int16_t> uv(size_t(2) * w * h);
     for (auto &v : uv) v = int16_t(rng.uniform(-1024, 1024));
-    return iterate_call(w, h, coef, uv, 4 * w, 4 * w, size_name(w, h));
+    CheckCall c = iterate_call(w, h, coef, uv, 4 * w, 4 * w, true, size_name(w, h));
+    c.bufs[kIterFlowScratch].place = BVB_PLACE_L1B;  // coefficients and flow in SDRAM, streamed
+    c.bufs[kIterCoefScratch].place = BVB_PLACE_L1A;
+    return c;
   }
   if (kernel == "hs_iterate_n") {
     std::vector<int16_t> coef(BVB_HS_COEF_BYTES(w, h) / 2);
@@ -509,6 +535,8 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
 //     stride 0).
 // prepare's bus bound with the frames and coefficients in SDRAM is lower: 2 bytes in and 6 out
 // per pixel at 0.5 byte per core cycle (bvb/dma.h) is 16.
+// hs_iterate streamed (the bench: frames in SDRAM, scratches in L1) is hs_iterate_n's one pass
+// of one level: the larger of 10 and 28, the bus's.
 // hs_iterate_n (frames in SDRAM): per pass of L fused levels (bvb/hornschunck.h: FUSED
 // ITERATIONS; N = 10 at 160 and 320 wide is two passes of 5, at 640 five of 2) the larger of
 // the compute, 10 L, and the bus, 14 bytes a pixel (6 coefficients and 4 flow in, 4 flow out)
@@ -527,7 +555,7 @@ double iterate_n_bound(int w, int iterations) {
 
 double lower_bound(const std::string &kernel, int w, int h) {
   const double px = double(w) * h;
-  if (kernel == "hs_iterate") return 10 * px;
+  if (kernel == "hs_iterate") return iterate_n_bound(w, 1) * px;  // streamed: the bus's 28
   if (kernel == "hs_iterate_n") return iterate_n_bound(w, kBenchIterations) * px;
   if (kernel == "hs_prepare") return 17 * px;
   if (kernel == "hornschunck") return (17 + 10.0 * kBenchIterations) * px;

@@ -227,11 +227,18 @@ void bvb_hs_prepare_c(const uint8_t *i1, const uint8_t *i2, int32_t width, int32
 void bvb_hs_prepare_asm(const uint8_t *i1, const uint8_t *i2, int32_t width, int32_t height,
                         int32_t stride, int32_t alpha2_q4, int16_t *coef, void *scratch);
 
-/* One Jacobi iteration uv_in -> uv_out; the caller ping-pongs the two buffers. */
+/* One Jacobi iteration uv_in -> uv_out; the caller ping-pongs the two buffers. flow_scratch
+ * and coef_scratch: NULL, or as bvb_hs_iterate_n's (BVB_HS_ITER_FLOW_SCRATCH_BYTES(width) and
+ * BVB_HS_ITER_COEF_SCRATCH_BYTES(width) bytes, 4-byte aligned): given, the assembly is
+ * bvb_hs_iterate_n_asm with one iteration, the rows streamed through them by DMA where it
+ * reaches (the frames in SDRAM, the scratches in L1: bus-bound, 14 bytes a pixel at 0.5 a
+ * cycle); NULL, it reads and writes the buffers where they are. The C reference uses neither. */
 void bvb_hs_iterate_c(const int16_t *coef, const int16_t *uv_in, int32_t in_stride,
-                      int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height);
+                      int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height,
+                      void *flow_scratch, void *coef_scratch);
 void bvb_hs_iterate_asm(const int16_t *coef, const int16_t *uv_in, int32_t in_stride,
-                        int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height);
+                        int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height,
+                        void *flow_scratch, void *coef_scratch);
 
 /* `iterations` (>= 1; fewer: nothing is written) Jacobi iterations uv_in -> uv_out, exactly
  * those of as many bvb_hs_iterate calls ping-ponging two buffers (uv_in is left as it was).
