@@ -26,8 +26,8 @@
  *   coefficients and flow in SDRAM through the data cache, as the bench places them:
  *                    160x120               320x240
  *   hs_iterate       616,456  (32.11)    2,307,931  (30.05)    bound 28 (the bus; compute 10)
- *   hs_prepare       410,030  (21.36)    1,504,833  (19.59)    bound 17 (bus 16)
- *   hornschunck    2,609,790 (135.9)     9,710,072 (126.4)     bound 117, N = 10
+ *   hs_prepare       378,006  (19.69)    1,410,741  (18.37)    bound 17 (bus 16)
+ *   hornschunck    2,577,927 (134.3)     9,615,769 (125.2)     bound 117, N = 10
  *   hs_iterate with its two L1 scratches is bvb_hs_iterate_n_asm's one level (bus-bound: 1.07x
  *   at 320x240, 1.15x at 160, the per-row cost over half the pixels); before, through the data
  *   cache, 1,195,196 (62.25) and 4,669,482 (60.80). (Its direct path: 2,250 to 2,850 cycles an
@@ -35,19 +35,25 @@
  *   call and return, 10 cycles a row, and at 160 wide the entry's two jumps; the simulator's
  *   counts below are those of before.) hornschunck is
  *   prepare streamed through its flow-row scratch (L1 bank B) and one bvb_hs_iterate_n_asm
- *   from a zero row read with stride 0: 1.08x its bound of 17 + 10 N at 320x240, 1.16x at 160
- *   (hs_iterate_n's per-row cost over half the pixels, prepare's 21.4); before, the iterations
+ *   from a zero row read with stride 0: 1.07x its bound of 17 + 10 N at 320x240, 1.15x at 160
+ *   (hs_iterate_n's per-row cost over half the pixels, prepare's 19.7); before, the iterations
  *   were N bvb_hs_iterate_asm calls through the data cache and a zeroed frame of start flow:
  *   13,226,105 and 52,997,199.
  *   hs_prepare streams its rows through L1 (the scratch in L1 bank B; STREAMED PATH below):
- *   640x480 5,804,772 (18.90). Its simulator counts are 370,510 and 1,432,760 against the
- *   343,133 and 1,339,013 of the same code on data in L1 (below): the 27k / 94k between them
- *   are the stream's per-band work (bvb_stream_next building and starting each job, 30 bands
- *   of 4 rows at 160 wide, 120 of 2 at 320: 700 to 900 cycles a band with the band loop's
- *   set-up), frame row 0 read straight from SDRAM and the last row's transfer; the model adds
- *   39k / 72k (waiting for band 0 and for the last band's output, the MMR accesses, the rsqrt
- *   table's line fills). Bus time is 16 c/px (2 bytes in, 6 out at 0.5 byte a cycle), under
- *   the compute, so the transfers hide; wider bands would halve the per-band cost.
+ *   640x480 5,608,612 (18.26). Target 18.5 c/px at 320x240 (1,420,800). Its simulator counts
+ *   are 359,865 and 1,389,435. Where the 320x240 call's 1,410,741 go (bfbench profile
+ *   hs_prepare), against the bound's 1,305,600: the three passes 1,333,278 (5,560 a row against
+ *   the bound's 5,440: each pass at its issue bound, about 120 a row of set-up, pass A's
+ *   alignment most of it); the stream's per-band work 47,600 (bvb_stream_next building and
+ *   starting each job, 80 bands of 3 rows: some 590 cycles a band); waiting for DMA 15,500
+ *   (band 0 with the table and row 0, 3,776 bytes, before anything can start, and the last
+ *   band's and row h-1's output at the end: the bus's 16 c/px are just under the compute, so
+ *   what is left to send after the last row cannot hide); frame 2's row 0 through the data
+ *   cache 2,100; the rest the band loop, the calls and the MMR accesses. No sub-bank
+ *   collisions are left in the loops (the layout, STREAMED PATH); 398 in pass A's first two
+ *   dual loads of a row, of the two frames' band rows (one sub-bank when they are close).
+ *   Before this layout (in-place sums, bands of 2, the table through the cache): 1,505,044, of
+ *   which 48,440 collisions and 10,859 line fills.
  *   Before the stream (frames through the data cache): 1,169,693 (60.92) and 4,635,194
  *   (60.35); where those went (the same calls with one charge of the model turned off):
  *   hs_prepare at 160x120: 343,133 issued (the simulator's own count), 607 address-register
@@ -96,11 +102,19 @@
  * STREAMED PATH (bvb_hs_prepare_asm with a scratch in L1 and a frame or the coefficients in
  *   SDRAM): the row-band stream (bvb/stream.h) brings rows 1..h-1 of both frames into L1 and
  *   sends coefficient rows 0..h-2 out, band by band, while the band before is computed: output
- *   row y needs frame rows y and y+1, so each band row is the lower row of its output row and
- *   the pass-A sums of the row above a band's first live in one of two sum rows of the scratch
- *   (frame row 0's read straight from SDRAM). Row h-1 is made after the stream, in its last
- *   output buffer, and leaves by one DMA transfer. Where the stream refuses (the scratch not in
- *   DMA-reachable L1, every buffer in L1), the direct path below.
+ *   row y needs frame rows y and y+1, so each band row is the lower row of its output row.
+ *   Pass A of every frame row goes to one of two sum rows, alternately, and pass B reads both
+ *   and writes the output row in the band; phase 2 works in place there. The scratch's layout
+ *   (bvb/hornschunck.h, BVB_HS_PREPARE_SCRATCH_BYTES) keeps the accesses each loop issues
+ *   together in different 4 KB sub-banks when the scratch starts at a 4 KB boundary (as the
+ *   bench places it): the sum rows each in a sub-bank of their own (pass B's dual loads of
+ *   both, pass A's stores against its frame loads, pass B's stores against its loads), the
+ *   stream's bands in the sub-banks after them, the count table in bank A. The bands are as
+ *   many rows as fit L1 bank B beside the stack (3 at 320 wide: 80 bands; bvb_stream_open_rows).
+ *   The rsqrt table and frame 1's row 0 come in by DMA on band 0's job (frame 2's row 0 is
+ *   read where it is). After the last band the kernel sends that band's output itself and
+ *   makes row h-1 in the other output buffer meanwhile, then sends it. Where the stream
+ *   refuses (the scratch not in DMA-reachable L1, every buffer in L1), the direct path below.
  *
  * MEMORY. The kernels work wherever the caller puts the buffers. At the robot's sizes frames,
  *   coefficients and flow live in SDRAM (working set 14 bytes per pixel: 263 KB at 160x120, past
@@ -109,7 +123,8 @@
  *   iteration alone is bus-bound: 28 cycles a pixel for its 14 bytes); bvb_hs_iterate_n_asm
  *   fuses the iterations over L1 rings (FUSED ITERATIONS above), and bvb_hornschunck_asm calls
  *   it with the two L1 scratches it is given. The count table is in L1 data bank A; the rsqrt
- *   table is the C reference's (.rodata).
+ *   table is the C reference's (.rodata), read there by the direct path and copied into the
+ *   scratch by the streamed one.
  *
  * ROWS. One routine makes an output row (HS_PIX0, then the loop of HS_PIX, then the last pixel)
  *   for both iteration kernels: L1 instruction memory has no room for a copy per kernel.
@@ -903,11 +918,11 @@ _bvb_hs_iterate_n_asm:
 #define HS_NMID    -20  /* phase-2 pairs with a pair after them: width / 2 - 1 */
 #define HS_ODD     -24  /* width & 1 */
 /* The streamed path's (bvb/stream.h) */
-#define HS_ST      -28  /* the stream's state: scratch + 8 width, after the two sum rows */
-#define HS_TOP     -32  /* pass-A data of the row above the next output row */
-#define HS_NXT     -36  /* the sum row that takes the row below a band's last */
+#define HS_ST      -28  /* the stream's state: scratch + BVB_HS_PREP_MAIN(width) */
+#define HS_TOP     -32  /* the sum row with pass A of the output row's frame row */
+#define HS_ROW0    -36  /* frame 1's row 0 in L1 */
 #define HS_CSUM    -40  /* the two sum rows' addresses added (the other = CSUM - one) */
-#define HS_END     -44  /* the band's output rows end */
+#define HS_N       -44  /* band 0's rows */
 #define HS_ALPHA   -48  /* alpha2_q4, clamped (A1 again after each stream call) */
 #define HS_F1      -52  /* the arguments in registers */
 #define HS_F2      -56
@@ -915,7 +930,9 @@ _bvb_hs_iterate_n_asm:
 #define HS_W       -64  /* width */
 #define HS_XFER    -88  /* the last row's transfer (struct bvb_dma_xfer) */
 #define HS_JOB     -200 /* and its DMA job (BVB_DMA_JOB_BYTES) */
-#define HS_FRAME   212  /* locals at FP-200..-1, the C calls' 12 bytes of arguments below */
+#define HS_PRE     -248 /* the table's and row 0's transfers, on band 0's job (2 x 24 bytes) */
+#define HS_PREP_L1_BUDGET 24576 /* BVB_HS_PREP_L1_BUDGET (bvb/hornschunck.h is C only) */
+#define HS_FRAME   264  /* locals at FP-248..-1, the C calls' 16 bytes of arguments below */
 
 /* Pass A: per-row frame sums and differences of one row of both frames, r = I2 + I1 and
  * n = I2 - I1 per column, into the row's coefficient area: per group of 4 columns the words
@@ -1389,17 +1406,72 @@ _bvb_hs_prepare_asm:
  * the stream has sent it, and leaves by one DMA transfer. */
 .Lps_stream:
 	[--sp] = rets;
-	/* the sum rows at the scratch's start, the stream's state after them */
+	/* The layout (bvb/hornschunck.h, BVB_HS_PREPARE_SCRATCH_BYTES): sum row 0 at the start,
+	 * sum row 1 at the next 4 KB past it (4 width rounded up), the table and frame 1's row 0
+	 * after it, the stream from the 4 KB boundary after those. */
 	r0 = [fp + 64];
 	r1 = [fp + HS_W4];
-	r2 = r0 + r1;
-	[fp + HS_NXT] = r2;
-	r2 = r2 + r0;
-	[fp + HS_CSUM] = r2;
 	[fp + HS_TOP] = r0;
-	r1 = r1 << 1;
-	r0 = r0 + r1;
+	r2 = 4095;
+	r3 = r1 + r2;
+	r2 = ~r2;
+	r3 = r3 & r2;                   /* SUM1 */
+	r4 = r0 + r3;
+	r5 = r0 + r4;
+	[fp + HS_CSUM] = r5;
+	r4 = r4 + r1;                   /* the table */
+	[fp + HS_PRE + DMAX_DST] = r4;
+	r5 = 1536 (x);
+	r4 = r4 + r5;                   /* frame 1's row 0 */
+	[fp + HS_ROW0] = r4;
+	[fp + HS_PRE + 24 + DMAX_DST] = r4;
+	[fp + HS_PRE + DMAX_SS] = r5;
+	[fp + HS_PRE + DMAX_DS] = r5;
+	[fp + HS_PRE + DMAX_W] = r5;
+	r5 = 1;
+	[fp + HS_PRE + DMAX_ROWS] = r5;
+	[fp + HS_PRE + 24 + DMAX_ROWS] = r5;
+	r5.l = _bvb_hs_rsqrt_table;
+	r5.h = _bvb_hs_rsqrt_table;
+	[fp + HS_PRE + DMAX_SRC] = r5;
+	r5 = [fp + HS_F1];
+	[fp + HS_PRE + 24 + DMAX_SRC] = r5;
+	r5 = [fp + HS_W];
+	[fp + HS_PRE + 24 + DMAX_SS] = r5;
+	[fp + HS_PRE + 24 + DMAX_DS] = r5;
+	[fp + HS_PRE + 24 + DMAX_W] = r5;
+	r5 += 3;
+	r2 = -4;
+	r5 = r5 & r2;                   /* its bytes, rounded to words */
+	r4 = r4 - r0;
+	r4 = r4 + r5;
+	r2 = 4095;
+	r4 = r4 + r2;
+	r2 = ~r2;
+	r4 = r4 & r2;                   /* MAIN (the rounding of the row's 4 bytes is inside it) */
+	r0 = r0 + r4;
 	[fp + HS_ST] = r0;
+	/* Band rows: (budget - MAIN - state - 24) / (2 (2 width + pitch)), 1 to 16. */
+	r2 = HS_PREP_L1_BUDGET - BVB_STREAM_STATE_BYTES - 24 (x);
+	r2 = r2 - r4;
+	r5 = [fp + HS_W];
+	r5 = r5 << 1;
+	r3 = [fp + HS_PITCH];
+	r5 = r5 + r3;
+	r5 = r5 << 1;
+	r6 = 0;
+	r3 = r5;
+	r7 = BVB_STREAM_MAX_BAND;
+.Lps_fit:
+	cc = r2 < r3;
+	if cc jump .Lps_fitted;
+	r6 += 1;
+	r3 = r3 + r5;
+	cc = r6 < r7;
+	if cc jump .Lps_fit (bp);
+.Lps_fitted:
+	r7 = 1;
+	r6 = max (r6, r7);
 	p0 = r0;
 	r2 = [fp + 52];                 /* stride */
 	r1 = [fp + HS_F1];
@@ -1421,18 +1493,41 @@ _bvb_hs_prepare_asm:
 	r1 = [fp + 48];
 	r1 += -1;
 	[p0 + ST_ROWS] = r1;
-	call _bvb_stream_open;
+	r1 = 2;
+	[sp + 12] = r1;
+	r1 = r6;
+	r2 = fp;
+	r3 = HS_PRE (x);
+	r2 = r2 + r3;
+	call _bvb_stream_open_rows;
 	cc = r0 == 0;
 	if cc jump .Lps_open;
 	jump.l .Lps_ret;
 .Lps_open:
-	/* Pass A of frame row 0, straight from the frames, into the first sum row. */
-	r0 = [fp + HS_F1];
+	/* The table from L1 from here on (P5: its address - 512, as in the direct path). */
+	r0 = [fp + HS_ROW0];
+	r1 = -(1536 + 512) (x);
+	r0 = r0 + r1;
+	p5 = r0;
+	r0 = [fp + HS_ST];
+	call _bvb_stream_next;          /* band 0, the table and row 0 are in */
+	[fp + HS_N] = r0;
+	/* Pass A of frame row 0 (frame 1's from L1, frame 2's from where it is) into sum row 0. */
+	r0 = [fp + HS_ROW0];
 	r1 = [fp + HS_F2];
 	p0 = [fp + HS_TOP];
 	HS_PASS_A 3
+	r0 = [fp + HS_N];
+	jump .Lps_more;
 .Lps_band:
-	r0 = [fp + HS_ST];
+	/* After the last band the kernel finishes the stream itself (.Lps_last). */
+	p0 = [fp + HS_ST];
+	r0 = [p0 + ST_FLY_N];
+	cc = r0 == 0;
+	if !cc jump .Lps_next;
+	jump.l .Lps_last;
+.Lps_next:
+	r0 = p0;
 	call _bvb_stream_next;
 	cc = r0 == 0;
 	if !cc jump .Lps_more;
@@ -1446,22 +1541,14 @@ _bvb_hs_prepare_asm:
 	b2 = r1;
 	r1 = [p0 + ST_OUT];
 	b0 = r1;
-	r2 = [fp + HS_PITCH];
-	r0 *= r2;
-	r0 = r0 + r1;
-	[fp + HS_END] = r0;
 	r1 = [fp + HS_ALPHA];
 	a1 = r1;
 	lsetup (.Lps_row, .Lps_row_end) lc1;
 .Lps_row:
-	/* Pass A of the band row (frame row y + 1): into output row y + 1's area, or the sum row */
-	r0 = b0;
-	r1 = [fp + HS_PITCH];
-	r0 = r0 + r1;
-	r1 = [fp + HS_END];
-	cc = r0 == r1;
-	r1 = [fp + HS_NXT];
-	if cc r0 = r1;
+	/* Pass A of the band row (frame row y + 1) into the sum row TOP is not */
+	r0 = [fp + HS_CSUM];
+	r1 = [fp + HS_TOP];
+	r0 = r0 - r1;
 	[fp + HS_DEST] = r0;
 	p0 = r0;
 	r0 = b1;
@@ -1494,16 +1581,30 @@ _bvb_hs_prepare_asm:
 	r0 = r0 + r1;
 .Lps_row_end:
 	b2 = r0;
-	/* The sum row just filled starts the next band; the other takes its last row's. */
-	r0 = [fp + HS_CSUM];
-	r1 = [fp + HS_TOP];
-	r0 = r0 - r1;
-	[fp + HS_NXT] = r0;
 	jump.l .Lps_band;
 .Lps_last:
-	/* Row h-1: pass B of TOP with itself, into the last band's output buffer (sent). */
+	/* The last band: once the band before's output is out, its own leaves while row h-1 (pass
+	 * B of TOP with itself) is made in the other output buffer, which then leaves too. */
 	p0 = [fp + HS_ST];
-	p3 = [p0 + ST_OUT];
+	r0 = [p0 + ST_RUNNING];
+	cc = r0 == 0;
+	if cc jump .Lps_idle;
+	call _bvb_dma_wait;
+.Lps_idle:
+	p0 = [fp + HS_ST];
+	r0 = [p0 + ST_OUT];
+	r1 = [p0 + ST_CUR_ROW];
+	r2 = [p0 + ST_CUR_N];
+	call .Lps_send;
+	[fp + HS_N] = r0;
+	p0 = [fp + HS_ST];
+	r0 = [p0 + ST_BUF_OUT];
+	r1 = [p0 + ST_BUF_OUT + 4];
+	r0 = r0 + r1;
+	r1 = [p0 + ST_OUT];
+	r0 = r0 - r1;
+	[fp + HS_DEST] = r0;
+	p3 = r0;
 	r0 = [fp + HS_TOP];
 	i2 = r0;
 	i3 = r0;
@@ -1515,25 +1616,39 @@ _bvb_hs_prepare_asm:
 	HS_PASS_B 4
 	r1 = [fp + HS_ALPHA];
 	a1 = r1;
-	p0 = [fp + HS_ST];
-	p3 = [p0 + ST_OUT];
+	p3 = [fp + HS_DEST];
 	HS_PHASE2 4
-	/* ... and out to coefficient row h-1 */
-	p0 = [fp + HS_ST];
-	r0 = [p0 + ST_OUT];
+	r0 = [fp + HS_N];
+	cc = r0 == 0;
+	if cc jump .Lps_sent;
+	call _bvb_dma_wait;
+.Lps_sent:
+	r0 = [fp + HS_DEST];
+	r1 = [fp + 48];
+	r1 += -1;
+	r2 = 1;
+	call .Lps_send;
+	cc = r0 == 0;
+	if cc jump .Lps_ret;
+	call _bvb_dma_wait;
+	r0 = 0;
+	jump .Lps_ret;
+
+/* R2 rows from R0 (L1) to coefficient row R1 on, by one DMA job, started (R0 = 1: wait for it),
+ * or by the core where DMA refuses (R0 = 0; none should: both blocks are where the stream's
+ * were). */
+.Lps_send:
+	[--sp] = rets;
 	[fp + HS_XFER + DMAX_SRC] = r0;
-	r1 = [fp + HS_PITCH];
-	[fp + HS_XFER + DMAX_SS] = r1;
-	[fp + HS_XFER + DMAX_DS] = r1;
-	[fp + HS_XFER + DMAX_W] = r1;
-	r2 = [fp + 48];
-	r2 += -1;
-	r2 *= r1;
+	[fp + HS_XFER + DMAX_ROWS] = r2;
+	r0 = [fp + HS_PITCH];
+	[fp + HS_XFER + DMAX_SS] = r0;
+	[fp + HS_XFER + DMAX_DS] = r0;
+	[fp + HS_XFER + DMAX_W] = r0;
+	r1 *= r0;
 	r0 = [fp + 60];
-	r0 = r0 + r2;
+	r0 = r0 + r1;
 	[fp + HS_XFER + DMAX_DST] = r0;
-	r0 = 1;
-	[fp + HS_XFER + DMAX_ROWS] = r0;
 	r0 = fp;
 	r1 = HS_JOB (x);
 	r0 = r0 + r1;
@@ -1549,21 +1664,25 @@ _bvb_hs_prepare_asm:
 	r0 = r0 + r1;
 	r1 = 1;
 	call _bvb_dma_start;
-	call _bvb_dma_wait;
-	r0 = 0;
-	jump .Lps_ret;
+	r0 = 1;
+	rets = [sp++];
+	rts;
 .Lps_copy:
-	/* what DMA refuses (none should: both blocks are where the stream's were), by the core */
 	p0 = [fp + HS_XFER + DMAX_SRC];
 	p1 = [fp + HS_XFER + DMAX_DST];
-	p2 = [fp + HS_PITCH];
-	p2 = p2 >> 2;
+	r0 = [fp + HS_XFER + DMAX_ROWS];
+	r1 = [fp + HS_PITCH];
+	r0 *= r1;
+	r0 >>= 2;
+	p2 = r0;
 	lsetup (.Lps_cp, .Lps_cp_end) lc0 = p2;
 .Lps_cp:
 	r0 = [p0++];
 .Lps_cp_end:
 	[p1++] = r0;
 	r0 = 0;
+	rets = [sp++];
+	rts;
 .Lps_ret:
 	rets = [sp++];
 	rts;

@@ -17,14 +17,20 @@ AT(dst_bytes, 32);
 AT(rows, 36);
 AT(in, 40);
 AT(out, 48);
+AT(cur_row, 60);
+AT(cur_n, 64);
+AT(fly_n, 72);
+AT(running, 76);
+AT(buf_out, 96);
 typedef char check_size[sizeof(struct bvb_stream) == BVB_STREAM_STATE_BYTES ? 1 : -1];
 
 enum { K_OUT = 0, K_IN0 = 1, K_IN1 = 2 };
 
-/* BVB_STREAM_BAND_ROWS(rb) without a division (libgcc's is in SDRAM). */
+/* BVB_STREAM_BAND_ROWS(rb) without a division (libgcc's is in SDRAM). Every count is tried,
+ * with no early exit: a hardware loop left early would return with LC1 non-zero. */
 static L1TEXT int32_t band_rows(int32_t rb) {
   int32_t b = 1;
-  while (b < BVB_STREAM_MAX_BAND && (b + 1) * rb <= BVB_STREAM_BAND_BYTES) ++b;
+  for (int32_t i = 2; i <= BVB_STREAM_MAX_BAND; ++i) b = i * rb <= BVB_STREAM_BAND_BYTES ? i : b;
   return b;
 }
 
@@ -58,8 +64,11 @@ static L1TEXT void core_copy(const struct bvb_dma_xfer *x) {
     for (int32_t i = 0; i < x->width; ++i) d[i] = s[i];
 }
 
-/* Slot *slot of job j: st->x, re-addressed when the slot was last prepared for this shape. */
-static L1TEXT void add(struct bvb_stream *st, int32_t j, int32_t *slot, int32_t kind) {
+/* Slot *slot of job j: st->x, re-addressed when the slot was last prepared for this shape.
+ * Inlined into its two callers: as a call, its register saves and returns cost some 40 cycles
+ * a transfer, three transfers a band. */
+static inline __attribute__((always_inline)) void add(struct bvb_stream *st, int32_t j,
+                                                      int32_t *slot, int32_t kind) {
   const int32_t key = st->x.rows * 4 + kind;
   int32_t *k = &st->key[j][*slot];
   if (*k == key) {
@@ -83,12 +92,13 @@ static L1TEXT void run(struct bvb_stream *st, int32_t j, int32_t slots) {
   }
 }
 
-static L1TEXT int32_t stream_open(struct bvb_stream *st) {
+/* Open with bands of b rows; pre[0 .. npre-1] ride at the front of band 0's job. */
+static L1TEXT __attribute__((noinline)) int32_t open_b(struct bvb_stream *st, int32_t b,
+                                                       const struct bvb_dma_xfer *pre, int32_t npre) {
   const int32_t nin = st->src_bytes[1] > 0 ? 2 : 1, out = st->dst_bytes > 0;
-  const int32_t rb = st->src_bytes[0] + (nin > 1 ? st->src_bytes[1] : 0) + (out ? st->dst_bytes : 0);
   if (st->src_bytes[0] <= 0 || st->rows <= 0 || in_sdram(st) ||
-      !bvb_dma_reachable(st, BVB_STREAM_SCRATCH_BYTES(st->src_bytes[0], nin > 1 ? st->src_bytes[1] : 0,
-                                                      out ? st->dst_bytes : 0)))
+      !bvb_dma_reachable(st, BVB_STREAM_SCRATCH_BYTES_B(b, st->src_bytes[0], nin > 1 ? st->src_bytes[1] : 0,
+                                                        out ? st->dst_bytes : 0)))
     return -1;
   int32_t any_sdram = 0;
   for (int32_t p = 0; p < nin; ++p) {
@@ -103,7 +113,6 @@ static L1TEXT int32_t stream_open(struct bvb_stream *st) {
   if (nin == 1) st->src_bytes[1] = 0;
   if (!out) st->dst_bytes = 0;
 
-  const int32_t b = band_rows(rb);
   st->band_rows = b;
   uint8_t *m = (uint8_t *)(st + 1);
   for (int32_t par = 0; par < 2; ++par) {
@@ -117,12 +126,14 @@ static L1TEXT int32_t stream_open(struct bvb_stream *st) {
   for (int32_t j = 0; j < 2; ++j)
     for (int32_t s = 0; s < BVB_DMA_MAX_XFERS; ++s) st->key[j][s] = -1;
 
-  /* Band 0 in, on job 1 (bvb_stream_next builds band k's job in job k & 1 while job
-   * (k - 1) & 1 runs); then the output's largest shape once, on slot 0 of job 0 (prepared again
-   * for band 1; later bands only shrink and move by whole rows). What DMA refuses here,
-   * the direct path does instead. */
+  /* Band 0 in (after the caller's transfers), on job 1 (bvb_stream_next builds band k's job in
+   * job k & 1 while job (k - 1) & 1 runs); then the output's largest shape once, on slot 0 of
+   * job 0 (prepared again for band 1; later bands only shrink and move by whole rows). What
+   * DMA refuses here, the direct path does instead. */
   const int32_t n0 = st->rows < b ? st->rows : b;
   int32_t slot = 0;
+  for (; slot < npre; ++slot)
+    if (bvb_dma_prepare(st->job[1], slot, &pre[slot]) != 0) return -1;
   for (int32_t kind = K_IN0; kind <= nin; ++kind) {
     xfer(st, kind, 0, n0, 0);
     if (bvb_dma_prepare(st->job[1], slot, &st->x) != 0) return -1;
@@ -148,10 +159,21 @@ static L1TEXT int32_t stream_open(struct bvb_stream *st) {
  * plane loops can leave LC1 armed), its convention; an assembly caller, which may
  * keep its own loops across the call, should find no stale count whose loop end could fire,
  * and the checked call reports a loop left counting. Both counters are cleared on return. */
-L1TEXT int32_t bvb_stream_open(struct bvb_stream *st) {
-  const int32_t r = stream_open(st);
+static L1TEXT int32_t loops_cleared(int32_t r) {
   __asm__ volatile("LC0 = %0;\n\tLC1 = %0;" : : "d"(0));
   return r;
+}
+
+L1TEXT int32_t bvb_stream_open(struct bvb_stream *st) {
+  const int32_t rb = st->src_bytes[0] + (st->src_bytes[1] > 0 ? st->src_bytes[1] : 0) +
+                     (st->dst_bytes > 0 ? st->dst_bytes : 0);
+  return loops_cleared(open_b(st, band_rows(rb), 0, 0));
+}
+
+L1TEXT int32_t bvb_stream_open_rows(struct bvb_stream *st, int32_t rows, const struct bvb_dma_xfer *pre,
+                                    int32_t npre) {
+  if (rows < 1 || rows > BVB_STREAM_MAX_BAND || npre < 0 || npre > BVB_DMA_MAX_XFERS - 2) return -1;
+  return loops_cleared(open_b(st, rows, pre, npre));
 }
 
 L1TEXT int32_t bvb_stream_next(struct bvb_stream *st) {

@@ -152,12 +152,35 @@ extern "C" {
 #define BVB_HS_COEF_BYTES(w, h) (2 * BVB_HS_COEF_PITCH(w) * (h))
 #define BVB_HS_SCRATCH_BYTES(w, h) (BVB_HS_COEF_BYTES(w, h) + 4 * (w) + 4)
 
-/* The L1 scratch of bvb_hs_prepare_asm's streamed path: the row-band stream (bvb/stream.h) of
- * rows 1..h-1 of both frames in and coefficient rows 0..h-2 out, and two rows of per-row sums
- * (4 bytes a pixel: the pass-A data of the row above a band's first row, and of the row below
- * its last). 11.6 KB at 160 wide (bands of 4 rows), 12.9 KB at 320 (2), 15.4 KB at 640 (1). */
+/* The L1 scratch of bvb_hs_prepare_asm's streamed path, from its start (offsets in bytes; the
+ * layout is why: two data accesses in one instruction cost a cycle when they meet in one 4 KB
+ * L1 sub-bank, so with the scratch at a 4 KB boundary the rows each inner loop touches at once
+ * sit in different sub-banks):
+ *   0      sum row 0 (4 bytes a pixel: the per-row frame sums of pass A)
+ *   SUM1   sum row 1, in the next 4 KB (the two alternate: pass B reads both in one instruction)
+ *   TABLE  the rsqrt table (bvb_hs_rsqrt_table, 1536 bytes), brought in by DMA with band 0
+ *   ROW0   frame 1's row 0 (likewise)
+ *   MAIN   from the next 4 KB boundary: the row-band stream (bvb/stream.h) of rows 1..h-1 of
+ *          both frames in and coefficient rows 0..h-2 out, bands of BAND rows: as many as fit
+ *          BVB_HS_PREP_L1_BUDGET (L1 bank B beside the stack), at most 16.
+ * 320 wide: bands of 3 rows, 23,936 bytes; 160: 6 rows, 23,936; 640: 1 row, 22,912. */
+#define BVB_HS_PREP_L1_BUDGET 24576
+#define BVB_HS_PREP_A4K(n) ((((n) + 4095) / 4096) * 4096)
+#define BVB_HS_PREP_SUM1(w) BVB_HS_PREP_A4K(4 * (w))
+#define BVB_HS_PREP_TABLE(w) (BVB_HS_PREP_SUM1(w) + 4 * (w))
+#define BVB_HS_PREP_ROW0(w) (BVB_HS_PREP_TABLE(w) + 2 * BVB_HS_RSQRT_ENTRIES)
+#define BVB_HS_PREP_MAIN(w) BVB_HS_PREP_A4K(BVB_HS_PREP_ROW0(w) + BVB_STREAM_A4(w))
+/* band rows: the budget over both buffers' bytes a row (24 bytes for the rounding of six) */
+#define BVB_HS_PREP_BAND_FIT(w)                                                              \
+  ((BVB_HS_PREP_L1_BUDGET - BVB_HS_PREP_MAIN(w) - BVB_STREAM_STATE_BYTES - 24) /              \
+   (2 * (2 * (w) + 2 * BVB_HS_COEF_PITCH(w))))
+#define BVB_HS_PREP_BAND(w)                                                                  \
+  (BVB_HS_PREP_BAND_FIT(w) > BVB_STREAM_MAX_BAND ? BVB_STREAM_MAX_BAND                       \
+   : BVB_HS_PREP_BAND_FIT(w) < 1                 ? 1                                         \
+                                                 : BVB_HS_PREP_BAND_FIT(w))
 #define BVB_HS_PREPARE_SCRATCH_BYTES(w)                                                      \
-  (BVB_STREAM_SCRATCH_BYTES((w), (w), 2 * BVB_HS_COEF_PITCH(w)) + 8 * (w))
+  (BVB_HS_PREP_MAIN(w) +                                                                     \
+   BVB_STREAM_SCRATCH_BYTES_B(BVB_HS_PREP_BAND(w), (w), (w), 2 * BVB_HS_COEF_PITCH(w)))
 
 /* FUSED ITERATIONS (bvb_hs_iterate_n_asm). Iteration level k of row y needs level k-1 of rows
  * y-1..y+1 and coefficient row y, so L levels run one pass down the frame, level k one row behind

@@ -42,6 +42,10 @@
  * and 7 per descriptor (2 per transfer). The core's per band, in bvb_stream_next: building the
  * job (moves), the wait, the start: a few hundred cycles, hidden when the kernel is bus-bound.
  *
+ * Loop registers: every hardware loop of the stream's routines runs to its end, so none is left
+ * armed (LC0, LC1 are as a finished loop leaves them); bvb_stream_open's band-row search tries
+ * every count for that, where leaving its loop early returned with LC1 non-zero.
+ *
  * Calling from assembly: C ABI (the routines are C, in L1 instruction SRAM, firmware/runtime/stream.c):
  * R0-R3, P0-P2, I0-I3, M0-M3, B0-B3, L0-L3 (which must be 0 at the call), A0, A1, LC0/1,
  * LT0/1, LB0/1 and ASTAT may change; R4-R7, P3-P5, FP are kept. Coherence: as bvb/dma.h. */
@@ -59,12 +63,13 @@
   ((rb) * BVB_STREAM_MAX_BAND <= BVB_STREAM_BAND_BYTES ? BVB_STREAM_MAX_BAND               \
    : (rb) >= BVB_STREAM_BAND_BYTES                     ? 1                                 \
                                                        : BVB_STREAM_BAND_BYTES / (rb))
-/* The scratch of a stream whose planes have b0, b1 (0: none) and bd (0: none) bytes a row. */
-#define BVB_STREAM_SCRATCH_BYTES(b0, b1, bd)                                                \
+/* The scratch of a stream of bands of b rows whose planes have b0, b1 (0: none) and bd (0: none)
+ * bytes a row (bvb_stream_open_rows), and of one with the default bands (bvb_stream_open). */
+#define BVB_STREAM_SCRATCH_BYTES_B(b, b0, b1, bd)                                           \
   (BVB_STREAM_STATE_BYTES +                                                                 \
-   2 * (BVB_STREAM_A4(BVB_STREAM_BAND_ROWS((b0) + (b1) + (bd)) * (b0)) +                    \
-        BVB_STREAM_A4(BVB_STREAM_BAND_ROWS((b0) + (b1) + (bd)) * (b1)) +                    \
-        BVB_STREAM_A4(BVB_STREAM_BAND_ROWS((b0) + (b1) + (bd)) * (bd))))
+   2 * (BVB_STREAM_A4((b) * (b0)) + BVB_STREAM_A4((b) * (b1)) + BVB_STREAM_A4((b) * (bd))))
+#define BVB_STREAM_SCRATCH_BYTES(b0, b1, bd)                                                \
+  BVB_STREAM_SCRATCH_BYTES_B(BVB_STREAM_BAND_ROWS((b0) + (b1) + (bd)), b0, b1, bd)
 
 #ifndef __ASSEMBLER__
 #include <stdint.h>
@@ -100,6 +105,13 @@ struct bvb_stream {
 };
 
 int32_t bvb_stream_open(struct bvb_stream *st);
+/* bvb_stream_open with bands of `rows` rows (1 .. BVB_STREAM_MAX_BAND; the scratch then is
+ * BVB_STREAM_SCRATCH_BYTES_B(rows, ...)), for a kernel whose L1 budget is not the default's,
+ * and npre (0 .. 2) transfers of the caller's own (tables, a first row) run on band 0's job
+ * before its rows, so that they share its wait: when bvb_stream_next first returns they are
+ * in. -1 as bvb_stream_open, and when DMA refuses one of them (nothing was started). */
+int32_t bvb_stream_open_rows(struct bvb_stream *st, int32_t rows, const struct bvb_dma_xfer *pre,
+                             int32_t npre);
 int32_t bvb_stream_next(struct bvb_stream *st);
 
 #ifdef __cplusplus
@@ -120,6 +132,12 @@ int32_t bvb_stream_next(struct bvb_stream *st);
 #define ST_IN0 40
 #define ST_IN1 44
 #define ST_OUT 48
+/* the stream's own, for a kernel that sends its last band itself */
+#define ST_CUR_ROW 60
+#define ST_CUR_N 64
+#define ST_FLY_N 72
+#define ST_RUNNING 76
+#define ST_BUF_OUT 96
 #endif
 
 #endif
