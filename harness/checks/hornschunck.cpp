@@ -353,6 +353,15 @@ void place_prepare(Checker &ck, CheckCall &c, Rng &rng) {
   ck.place_streaming(c, kPrepareScratch, rng);
 }
 
+// hs_iterate (with its scratches) and hs_iterate_n as the robot runs them: frames in SDRAM,
+// the flow rows' scratch in L1 bank B and the coefficient rows' in bank A (the DMA path).
+void place_iter_robot(CheckCall &c) {
+  for (auto &b : c.bufs) b.skew = 0;
+  c.bufs[kIterFlowScratch].place = BVB_PLACE_L1B;
+  c.bufs[kIterCoefScratch].place = BVB_PLACE_L1A;
+  c.case_name += " frames SDRAM";
+}
+
 int flow_stride(int w, Rng &rng) { return pick_stride(4 * w, rng, 4); }
 
 void check(Checker &ck) {
@@ -417,14 +426,10 @@ void check(Checker &ck) {
         CheckCall c = iterate_call(s.w, s.h, coef, uv, is, os, how != 0,
                                    size_name(s.w, s.h) + " strides " + std::to_string(is) + "/" +
                                        std::to_string(os) + " " + cn + " " + fn);
-        if (how == 1) {
-          for (auto &b : c.bufs) b.skew = 0;
-          c.bufs[kIterFlowScratch].place = BVB_PLACE_L1B;
-          c.bufs[kIterCoefScratch].place = BVB_PLACE_L1A;
-          c.case_name += " frames SDRAM";
-        } else {
+        if (how == 1)
+          place_iter_robot(c);
+        else
           place(ck, c, rng);
-        }
         ck.add(std::move(c));
       }
   }
@@ -450,14 +455,10 @@ void check(Checker &ck) {
       CheckCall c = iterate_n_call(s.w, s.h, coef, uv, is, os, n,
                                    size_name(s.w, s.h) + " strides " + std::to_string(is) + "/" +
                                        std::to_string(os) + " " + cn + " " + fn + " N=" + std::to_string(n));
-      if (rng.uniform(0, 1) == 0) {
-        for (auto &b : c.bufs) b.skew = 0;
-        c.bufs[kIterFlowScratch].place = BVB_PLACE_L1B;
-        c.bufs[kIterCoefScratch].place = BVB_PLACE_L1A;
-        c.case_name += " frames SDRAM";
-      } else {
+      if (rng.uniform(0, 1) == 0)
+        place_iter_robot(c);
+      else
         place(ck, c, rng);
-      }
       ck.add(std::move(c));
     }
   }
