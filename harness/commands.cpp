@@ -6,7 +6,7 @@
 
 #include "extra_commands.h"
 #include "flow/hs_accuracy_cli.h"
-#include "pipeline/runner.h"
+#include "session/runner.h"
 #include "scene/scene_cli.h"
 
 namespace bvb {

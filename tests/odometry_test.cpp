@@ -10,7 +10,7 @@
 
 #include "bvb/harris.h"
 #include "bvb/pipe_odometry.h"
-#include "pipeline/runner.h"
+#include "session/runner.h"
 #include "scene/scene_io.h"
 
 namespace {

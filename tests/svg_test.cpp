@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/svg.h"
+#include "session/svg.h"
 
 namespace bvb {
 namespace {

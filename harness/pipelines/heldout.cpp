@@ -17,7 +17,7 @@
 #include "extra_commands.h"
 #include "io.h"
 #include "options.h"
-#include "pipeline/runner.h"
+#include "session/runner.h"
 #include "pipelines/odometry.h"
 #include "scene/heldout.h"
 #include "scene/rng.h"

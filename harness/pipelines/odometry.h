@@ -9,7 +9,7 @@
 
 #include "bvb/pipe_odometry.h"
 #include "family.h"
-#include "pipeline/runner.h"
+#include "session/runner.h"
 
 namespace bvb {
 

@@ -11,7 +11,7 @@
 #include "bvb/pipeline.h"
 #include "check.h"
 #include "family.h"
-#include "pipeline/runner.h"
+#include "session/runner.h"
 #include "scene/scene_io.h"
 
 namespace bvb {

@@ -1,6 +1,6 @@
 // Held-out scenes: arenas (room, obstacle layout, floor and light), floor texture seeds, start
 // poses and paths drawn from one seed, so that the pipelines are judged on scenes their
-// parameters were never tuned on (bfbench heldout, harness/pipeline/heldout.cpp).
+// parameters were never tuned on (bfbench heldout, harness/pipelines/heldout.cpp).
 //
 // Every scene is a function of (seed, kind, index) alone: scene k of a seed is the same whatever
 // other scenes or pipelines a run asks for, so a run's printed seed replays it exactly. The

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <memory>
 
-#include "pipeline/runner.h"
+#include "session/runner.h"
 #include "pipelines/odometry.h"
 #include "scene/scene_io.h"
 #include "target.h"

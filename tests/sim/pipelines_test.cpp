@@ -7,7 +7,7 @@
 #include <string>
 
 #include "bvb/pipeline.h"
-#include "pipeline/runner.h"
+#include "session/runner.h"
 #include "target.h"
 
 namespace bvb {
