@@ -1225,3 +1225,475 @@ _bvb_harris_nms_asm:
 .Lc_p_e: p4 += 1;
 	rts;
 	.size _bvb_harris_nms_asm, . - _bvb_harris_nms_asm
+
+/* bvb_harris_nms_stream_asm: bvb_harris_nms with the response map in SDRAM, its rows brought
+ * into L1 by memory DMA (bvb/dma.h) while the core scans the pair before; the same arguments,
+ * the same candidates. The scratch (BVB_HARRIS_NMS_STREAM_SCRATCH_BYTES) holds the lower
+ * row's waiting candidates, the DMA job and a ring of six rows: band k (map rows 2k, 2k+1)
+ * goes to slot k % 3 of two regions, the even rows to E, the odd rows to O, with O in other
+ * 4 KB sub-banks than E, so that the scan's dual loads of a pair's two rows (an odd upper row,
+ * an even lower one) never meet in one sub-bank. Pair j (rows 2j+1, 2j+2) reads bands j and
+ * j+1 while band j+2 comes into the slot band j-1 has left: one job of one 2-row transfer a
+ * pair (re-addressed, bvb_dma_move), waited for before the next. The rows above an upper row
+ * and below a lower row are G = O - E away, the lower row Dp = E(j+1 % 3) - O(j % 3) from the
+ * upper: the pair code below is bvb_harris_nms_asm's with those two distances. Candidates go
+ * straight to cand. An odd last row is scanned in SDRAM. Anything else (the map in L1, the
+ * scratch not in DMA-reachable L1, maps narrower than 8 or lower than 4, a transfer DMA
+ * refuses) takes bvb_harris_nms_asm as it is. Called once per frame, the driver runs from
+ * SDRAM (.text) through the instruction cache. */
+#define S_RESP   -32   /* resp */
+#define S_H      -36   /* height */
+#define S_RB     -40   /* bytes per row, 4 width */
+#define S_SSTR   -44   /* stride in bytes */
+#define S_E      -48   /* region E (even rows), slot s at E + s RB */
+#define S_O      -52   /* region O (odd rows) */
+#define S_JOB    -56
+#define S_SRC    -60   /* the next band to bring, in SDRAM */
+#define S_BSLOT  -64   /* its slot offset, s RB */
+#define S_BLEFT  -68   /* bands left to bring */
+#define S_PSLOT  -72   /* the slot offset of the current pair's upper row */
+#define S_X      -96   /* struct bvb_dma_xfer */
+#define S_SIZE   96
+
+	.text
+	.align 4
+	.global _bvb_harris_nms_stream_asm
+	.type _bvb_harris_nms_stream_asm, STT_FUNC
+_bvb_harris_nms_stream_asm:
+	[--sp] = (r7:4, p5:3);
+	link S_SIZE;
+	[fp + C_W] = r1;
+	[fp + S_RESP] = r0;
+	[fp + S_H] = r2;
+	r4 = r1 << 2;
+	[fp + S_RB] = r4;
+	r3 = 8;
+	cc = r1 < r3;
+	if cc jump .Ls_direct;
+	r3 = 4;
+	cc = r2 < r3;
+	if cc jump .Ls_direct;
+	/* the map in SDRAM, all of it where DMA reaches */
+	r3.l = 0;
+	r3.h = 0x0200;
+	cc = r0 < r3 (iu);
+	if !cc jump .Ls_direct;
+	r5 = [fp + C_ARG_STRIDE];
+	r5 <<= 2;
+	[fp + S_SSTR] = r5;
+	r1 = r2;
+	r1 += -1;
+	r1 *= r5;
+	r1 = r1 + r4;
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ls_direct;
+	/* the scratch in L1 data SRAM DMA reaches */
+	r0 = [fp + C_ARG_SCRATCH];
+	r3.l = 0;
+	r3.h = 0xff80;
+	cc = r0 < r3 (iu);
+	if cc jump .Ls_direct;
+	r1 = [fp + C_W];
+	r2 = 24;
+	r1 *= r2;               /* 24 width: the six ring rows */
+	r3 = [fp + C_W];
+	r3 += -1;
+	r3 >>= 1;
+	r3 <<= 3;
+	r3 += 8;                /* the waiting list, BVB_HARRIS_NMS_SCRATCH_BYTES */
+	r1 = r1 + r3;
+	r2 = 4240 (z);        /* the job (128), the gap to O's boundary (< 4096), a pad (16) */
+	r1 = r1 + r2;
+	r0 = [fp + C_ARG_SCRATCH];
+	[fp + S_JOB] = r3;      /* (the list's size, for a moment) */
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ls_direct;
+	/* the layout: list, job, E (three rows), O from the next 4 KB boundary after E's end */
+	r0 = [fp + C_ARG_SCRATCH];
+	r3 = [fp + S_JOB];
+	r0 = r0 + r3;
+	[fp + S_JOB] = r0;
+	r1 = 128;
+	r0 = r0 + r1;
+	[fp + S_E] = r0;
+	r4 = [fp + S_RB];
+	r1 = r4 + r4;
+	r1 = r1 + r4;
+	r1 = r0 + r1;           /* E + 3 RB */
+	r2 = 4095;
+	r1 = r1 + r2;
+	r2 = ~r2;
+	r1 = r1 & r2;
+	[fp + S_O] = r1;
+	r1 = r1 - r0;
+	m0 = r1;                /* G = O - E */
+
+	/* job: bands 0 and 1 into slot 0 and 1 (rows 0, 2 to E, rows 1, 3 to O) */
+	r0 = [fp + S_RESP];
+	[fp + S_X + DMAX_SRC] = r0;
+	r0 = [fp + S_SSTR];
+	[fp + S_X + DMAX_SS] = r0;
+	r0 = [fp + S_E];
+	[fp + S_X + DMAX_DST] = r0;
+	r0 = m0;
+	[fp + S_X + DMAX_DS] = r0;
+	r0 = [fp + S_RB];
+	[fp + S_X + DMAX_W] = r0;
+	r0 = 2;
+	[fp + S_X + DMAX_ROWS] = r0;
+	r0 = [fp + S_JOB];
+	r1 = 1;
+	r2 = fp;
+	r3 = S_X (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	cc = r0 < 0;
+	if cc jump .Ls_direct;
+	r0 = [fp + S_RESP];
+	r1 = [fp + S_SSTR];
+	r1 <<= 1;
+	r0 = r0 + r1;
+	[fp + S_X + DMAX_SRC] = r0;
+	r0 = [fp + S_E];
+	r1 = [fp + S_RB];
+	r0 = r0 + r1;
+	[fp + S_X + DMAX_DST] = r0;
+	r0 = [fp + S_JOB];
+	r1 = 0;
+	r2 = fp;
+	r3 = S_X (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;  /* slot 0 last: the shape every later band re-addresses */
+	cc = r0 < 0;
+	if cc jump .Ls_direct;
+	r0 = [fp + S_JOB];
+	r1 = 2;
+	call _bvb_dma_start;
+
+	/* the scan's state, as bvb_harris_nms_asm's */
+	r2 = [fp + S_H];
+	r2 += -2;
+	r3 = 1;
+	r0 = r2 & r3;
+	[fp + C_ODDH] = r0;
+	r2 >>= 1;
+	[fp + C_PAIRS] = r2;    /* >= 1 */
+	r2 += -1;
+	[fp + S_BLEFT] = r2;    /* bands 2 .. pairs */
+	r0 = 1;
+	r0 <<= 16;
+	r0 += 1;
+	[fp + C_KEY] = r0;
+	r1 = [fp + C_W];
+	r1 += -2;
+	r0 = r1 & r3;
+	[fp + C_ODDW] = r0;
+	r1 >>= 1;
+	[fp + C_NB] = r1;
+	r0 = [fp + S_RESP];
+	r1 = [fp + S_SSTR];
+	r1 <<= 2;
+	r0 = r0 + r1;
+	[fp + S_SRC] = r0;      /* band 2 */
+	r0 = [fp + S_RB];
+	r0 <<= 1;
+	[fp + S_BSLOT] = r0;
+	r0 = 0;
+	[fp + S_PSLOT] = r0;
+	r7 = [fp + C_ARG_THR];
+	r6 = -1;
+	p5 = [fp + C_ARG_CAND];
+	m1 = -4;
+	m2 = -16;
+
+.Ls_pair:
+	call _bvb_dma_wait;     /* bands j, j+1 are in */
+	r0 = [fp + S_BLEFT];
+	cc = r0 == 0;
+	if cc jump .Ls_scan;
+	r0 += -1;
+	[fp + S_BLEFT] = r0;
+	r0 = [fp + S_SRC];
+	[fp + S_X + DMAX_SRC] = r0;
+	r1 = [fp + S_SSTR];
+	r1 <<= 1;
+	r0 = r0 + r1;
+	[fp + S_SRC] = r0;
+	r0 = [fp + S_BSLOT];
+	r1 = [fp + S_E];
+	r1 = r1 + r0;
+	[fp + S_X + DMAX_DST] = r1;
+	r1 = [fp + S_RB];
+	r0 = r0 + r1;
+	r2 = r1 + r1;
+	r2 = r2 + r1;
+	cc = r0 == r2;
+	r2 = 0;
+	if cc r0 = r2;
+	[fp + S_BSLOT] = r0;
+	r0 = [fp + S_JOB];
+	r1 = 0;
+	r2 = fp;
+	r3 = S_X (x);
+	r2 = r2 + r3;
+	call _bvb_dma_move;
+	r0 = [fp + S_JOB];
+	r1 = 1;
+	call _bvb_dma_start;
+.Ls_scan:
+	/* upper row 2j+1 in O at slot j % 3, lower row 2j+2 in E at slot (j+1) % 3 */
+	r0 = [fp + S_PSLOT];
+	r1 = [fp + S_O];
+	r1 = r1 + r0;
+	r1 += 4;
+	b0 = r1;
+	r2 = [fp + S_RB];
+	r0 = r0 + r2;
+	r3 = r2 + r2;
+	r3 = r3 + r2;
+	cc = r0 == r3;
+	r3 = 0;
+	if cc r0 = r3;
+	[fp + S_PSLOT] = r0;
+	r2 = [fp + S_E];
+	r2 = r2 + r0;
+	r2 += 4;
+	r2 = r2 - r1;
+	m3 = r2;                /* Dp */
+	r1 = [fp + C_KEY];
+	b1 = r1;
+	call .Ls_do_pair;
+	r0 = [fp + C_KEY];
+	r1 = 2;
+	r1 <<= 16;
+	r0 = r0 + r1;
+	[fp + C_KEY] = r0;
+	r0 = [fp + C_PAIRS];
+	r0 += -1;
+	[fp + C_PAIRS] = r0;
+	cc = r0 == 0;
+	if !cc jump .Ls_pair;
+
+	/* an odd last row, y = h - 2, in SDRAM */
+	r0 = [fp + C_ODDH];
+	cc = r0 == 0;
+	if cc jump .Ls_done;
+	r0 = [fp + S_H];
+	r0 += -2;
+	r1 = [fp + S_SSTR];
+	r0 *= r1;
+	r2 = [fp + S_RESP];
+	r0 = r0 + r2;
+	r0 += 4;
+	b0 = r0;
+	b2 = r1;
+	b3 = r1;
+	r1 = [fp + C_KEY];
+	b1 = r1;
+	r1 = [fp + C_W];
+	r1 += -2;
+	p2 = r1;
+	p1 = -4;
+	call .Ls_pix;
+.Ls_done:
+	r0 = [fp + C_ARG_CAND];
+	r1 = p5;
+	r0 = r1 - r0;
+	r0 >>= 3;
+	p0 = [fp + C_ARG_COUNT];
+	[p0] = r0;
+	unlink;
+	(r7:4, p5:3) = [sp++];
+	rts;
+
+.Ls_direct:
+	r0 = [fp + S_RESP];
+	r1 = [fp + C_W];
+	r2 = [fp + S_H];
+	unlink;
+	(r7:4, p5:3) = [sp++];
+	jump.l _bvb_harris_nms_asm;
+
+/* One row pair from the ring: B0 its upper row (x = 1), B1 that row's key, M3 = Dp, M0 = G. */
+.Ls_do_pair:
+	[--sp] = rets;
+	r0 = b0;
+	r2 = [fp + C_ARG_SCRATCH];
+	p3 = r2;                 /* the lower row's candidates wait here */
+	p2 = [fp + C_NB];
+	i0 = r0;
+	r1 = m3;
+	r0 = r0 + r1;
+	i1 = r0;
+	mnop || r0 = [i0++] || r2 = [i1++];
+	mnop || r1 = [i0++] || r3 = [i1++];
+	r4 = max (r0, r2) || r0 = [i0++] || r2 = [i1++];
+	r5 = max (r1, r3) || r1 = [i0++] || r3 = [i1++];
+	lsetup (.Ls_b_s, .Ls_b_e) lc0 = p2;
+.Ls_b_s: r4 = max (r4, r5);
+	cc = r4 <= r7;
+	if !cc jump .Ls_slow;
+.Ls_back:
+	r4 = max (r0, r2) || r0 = [i0++] || r2 = [i1++];
+.Ls_b_e: r5 = max (r1, r3) || r1 = [i0++] || r3 = [i1++];
+	p1 = -4;
+	r0 = [fp + C_ODDW];
+	cc = r0 == 0;
+	if cc jump 1f;
+	r0 = [fp + C_NB];
+	r0 <<= 3;
+	r1 = b0;
+	r0 = r0 + r1;
+	b2 = m0;
+	b3 = m3;
+	p2 = 1;
+	call .Ls_pix;
+1:	r0 = [fp + C_ARG_SCRATCH];
+	r1 = p3;
+	r1 = r1 - r0;
+	r1 >>= 2;
+	cc = r1 == 0;
+	if cc jump 2f;
+	i2 = r0;
+	p2 = r1;
+	lsetup (3f, 5f) lc1 = p2;
+3:	r0 = [i2++];
+5:	[p5++] = r0;
+2:
+	r0 = [fp + C_ODDW];
+	cc = r0 == 0;
+	if cc jump 4f;
+	r0 = b0;
+	r1 = m3;
+	r0 = r0 + r1;
+	b0 = r0;
+	r1 = b1;
+	r2 = 1;
+	r2 <<= 16;
+	r1 = r1 + r2;
+	b1 = r1;
+	r1 = [fp + C_NB];
+	r1 <<= 3;
+	r0 = r0 + r1;
+	b2 = m3;
+	b3 = m0;
+	p2 = 1;
+	call .Ls_pix;
+4:	rets = [sp++];
+	rts;
+
+/* A 2x2 block above the threshold (bvb_harris_nms_asm's .Lc_slow with the ring's distances):
+ * the row above an upper winner is G before it and the row below Dp after it; above a lower
+ * winner Dp before, below G after. */
+.Ls_slow:
+	i0 += m2;
+	i1 += m2;
+	mnop || r0 = [i0++] || r2 = [i1++];     /* a, c */
+	mnop || r1 = [i0++] || r3 = [i1++];     /* b, d */
+	r4 = 0;
+	r5 = 4;
+	cc = r0 < r1;
+	if cc r0 = r1;
+	if cc r4 = r5;
+	r5 = m3;
+	r1 = r5;
+	r1 += 4;
+	cc = r2 < r3;
+	if cc r2 = r3;
+	if cc r5 = r1;
+	r1 = m0;
+	r3 = m3;
+	cc = r0 < r2;
+	if cc r0 = r2;
+	if cc r4 = r5;                           /* R0 its value, R4 its offset from the block */
+	r5 = r1;
+	if cc r1 = r3;
+	if cc r3 = r5;                           /* R1 the distance up, R3 down */
+	r2 = i0;
+	r2 += -12;
+	r2 = r2 + r4;                            /* the winner - 4 */
+	r5 = r2 - r1;
+	i2 = r5;
+	r5 = r2 + r3;
+	i3 = r5;
+	p0 = r2;
+	mnop || r1 = [i2++] || r2 = [i3++];      /* u0, d0 */
+	mnop || r3 = [i2++] || r5 = [i3++];      /* u1, d1 */
+	r1 = max (r1, r3) || r3 = [i2++];        /* u2 */
+	r2 = max (r2, r5) || r5 = [i3++];        /* d2 */
+	r1 = max (r1, r3) || r3 = [p0++];        /* l */
+	r2 = max (r2, r5) || r5 = [p0++];        /* (v) */
+	r1 = max (r1, r3) || r3 = [p0];          /* r */
+	r2 = max (r2, r3);
+	r2 = r2 + r6 (ns);
+	r1 = max (r1, r2);
+	cc = r1 < r0;
+	if cc jump .Ls_found;
+.Ls_resume:
+	mnop || r0 = [i0++] || r2 = [i1++];
+	mnop || r1 = [i0++] || r3 = [i1++];
+	jump .Ls_back;
+.Ls_found:
+	r1 = i0;
+	r1 += -8;
+	r2 = b0;
+	r1 = r1 - r2;
+	r1 >>= 2;
+	r2 = b1;
+	r1 = r1 + r2;
+	r2 = 4;
+	cc = r4 <= r2 (iu);                      /* upper row: offset 0 or 4 (Dp is negative) */
+	if !cc jump 1f;
+	r4 >>= 2;
+	r1 = r1 + r4;
+	[p5++] = r1;
+	[p5++] = r0;
+	jump .Ls_resume;
+1:	r2 = m3;
+	r4 = r4 - r2;
+	r4 >>= 2;
+	r1 = r1 + r4;
+	r2 = 1;
+	r2 <<= 16;
+	r1 = r1 + r2;
+	[p3++] = r1;
+	[p3++] = r0;
+	jump .Ls_resume;
+
+/* .Lc_pix with the distance to the row above in B2 and to the row below in B3. */
+.Ls_pix:
+	r1 = b0;
+	r2 = r0 - r1;
+	r2 >>= 2;
+	r1 = b1;
+	r2 = r2 + r1;
+	p4 = r2;
+	r0 += -4;
+	r1 = b2;
+	r2 = r0 - r1;
+	i2 = r2;
+	r1 = b3;
+	r2 = r0 + r1;
+	i3 = r2;
+	p0 = r0;
+	lsetup (.Ls_p_s, .Ls_p_e) lc1 = p2;
+.Ls_p_s: mnop || r0 = [i2++] || r1 = [i3++];
+	r0 = max (r0, r7) || r2 = [i2++] || r3 = [i3++];
+	r0 = max (r0, r2) || r2 = [i2++m1] || r4 = [i3++m1];
+	r0 = max (r0, r2) || r2 = [p0++];
+	r1 = max (r1, r3) || r3 = [p0++];
+	r0 = max (r0, r2) || r2 = [p0++p1];
+	r1 = max (r1, r4);
+	r1 = max (r1, r2);
+	r1 = r1 + r6 (ns);
+	r0 = max (r0, r1);
+	cc = r0 < r3;
+	if !cc jump .Ls_p_e (bp);
+	r0 = p4;
+	[p5++] = r0;
+	[p5++] = r3;
+.Ls_p_e: p4 += 1;
+	rts;
+	.size _bvb_harris_nms_stream_asm, . - _bvb_harris_nms_stream_asm

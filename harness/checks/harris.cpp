@@ -70,7 +70,7 @@ CheckCall nms_call(int w, int h, int stride, std::vector<int32_t> resp, int32_t 
   int ir = c.in("resp", as_bytes(resp), View{4, true, w, h, stride});
   int io = c.out("cand", size_t(cap) * 8, View{4, true, 2, cap, 2});
   int in = c.out("count", 4, View{4, true});
-  int is = c.scratch("scratch", BVB_HARRIS_NMS_SCRATCH_BYTES(w));
+  int is = c.scratch("scratch", BVB_HARRIS_NMS_STREAM_SCRATCH_BYTES(w));
   c.buf(ir).word(w).word(h).word(stride).word(threshold).buf(io).buf(in).buf(is);
   c.host = [=](HostBuffers &m) {
     m.set_ret(bvb_harris_nms_c(m.s32(ir), w, h, stride, threshold, m.s32(io), m.s32(in), m.u8(is)));
@@ -183,7 +183,8 @@ void check(Checker &ck) {
         }
         {
           CheckCall c = nms_call(s.w, s.h, stride, std::move(resp), threshold, base);
-          ck.place_randomly(c);
+          // Half the calls where the robot's stand-alone scan runs (the map streamed through L1).
+          ck.place_streaming(c, 3, rng);
           ck.add(std::move(c));
         }
       }
@@ -209,7 +210,12 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
   auto resp = host_response(img, w, h, w);
   int32_t maxv = 0;
   for (int32_t v : resp) maxv = std::max(maxv, v);
-  if (kernel == "harris_nms") return nms_call(w, h, w, std::move(resp), maxv / 100, size);
+  if (kernel == "harris_nms") {
+    // The map in SDRAM, the scratch (13.2 KB at 320 wide) in L1 bank B: the rows stream in.
+    CheckCall c = nms_call(w, h, w, std::move(resp), maxv / 100, size);
+    c.bufs[3].place = BVB_PLACE_L1B;
+    return c;
+  }
   auto cand = host_nms(resp, w, h, w, maxv / 100);
   return select_call(std::move(cand), 32, 8, size + " " + std::to_string(cand.size() / 2) + " cand", double(w) * h);
 }
