@@ -1247,13 +1247,25 @@ _bvb_harris_nms_asm:
 #define S_SSTR   -44   /* stride in bytes */
 #define S_E      -48   /* region E (even rows), slot s at E + s RB */
 #define S_O      -52   /* region O (odd rows) */
-#define S_JOB    -56
+#define S_JOB    -56   /* job area 0 (area 1 follows, 128 bytes on) */
 #define S_SRC    -60   /* the next band to bring, in SDRAM */
 #define S_BSLOT  -64   /* its slot offset, s RB */
 #define S_BLEFT  -68   /* bands left to bring */
 #define S_PSLOT  -72   /* the slot offset of the current pair's upper row */
-#define S_X      -96   /* struct bvb_dma_xfer */
-#define S_SIZE   96
+#define S_SECT   -76   /* bytes per candidate section */
+#define S_SEC    -80   /* the section the last pair's candidates went to */
+#define S_PREVN  -84   /* ... and their number */
+#define S_CPOS   -88   /* where in cand the next section goes */
+#define S_AREA   -92   /* the job area the next job is built in (0, 1) */
+#define S_CKEY   -100  /* per area, the slot prepared for candidates (-1: none) */
+#define S_CUR    -104  /* the area being built */
+#define S_NSLOT  -108  /* its slots */
+#define S_X      -132  /* struct bvb_dma_xfer */
+#define S_SIZE   132
+/* bvb/dma.h's descriptor layout: X_COUNT is halfword 3 of each 7-halfword descriptor, the
+ * destination's descriptors BVB_DMA_MAX_XFERS * 14 bytes after the source's. */
+#define S_DS_XC  6
+#define S_DST_SLOTS (BVB_DMA_MAX_XFERS * 14)
 
 	.text
 	.align 4
@@ -1288,34 +1300,57 @@ _bvb_harris_nms_stream_asm:
 	call _bvb_dma_reachable;
 	cc = r0 == 0;
 	if cc jump .Ls_direct;
+	/* cand where DMA reaches: its capacity, ((w - 1) / 2) ((h - 1) / 2) pairs */
+	r0 = [fp + C_W];
+	r0 += -1;
+	r0 >>= 1;
+	r1 = [fp + S_H];
+	r1 += -1;
+	r1 >>= 1;
+	r1 *= r0;
+	r1 <<= 3;
+	r0 = [fp + C_ARG_CAND];
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ls_direct;
 	/* the scratch in L1 data SRAM DMA reaches */
 	r0 = [fp + C_ARG_SCRATCH];
 	r3.l = 0;
 	r3.h = 0xff80;
 	cc = r0 < r3 (iu);
 	if cc jump .Ls_direct;
-	r1 = [fp + C_W];
-	r2 = 24;
-	r1 *= r2;               /* 24 width: the six ring rows */
 	r3 = [fp + C_W];
 	r3 += -1;
 	r3 >>= 1;
 	r3 <<= 3;
 	r3 += 8;                /* the waiting list, BVB_HARRIS_NMS_SCRATCH_BYTES */
-	r1 = r1 + r3;
-	r2 = 4240 (z);        /* the job (128), the gap to O's boundary (< 4096), a pad (16) */
+	r2 = r3;
+	r2 += 8;
+	[fp + S_SECT] = r2;     /* a pair's candidates, at most (w - 2) / 2 + 2 */
+	r1 = [fp + C_W];
+	r2 = 24;
+	r1 *= r2;               /* the six ring rows */
+	r2 = r3 + r3;
+	r2 = r2 + r3;
+	r1 = r1 + r2;
+	r2 = 4384 (z);          /* the sections' 16, two jobs (256), the gap to O's boundary (< 4096), a pad (16) */
 	r1 = r1 + r2;
 	r0 = [fp + C_ARG_SCRATCH];
 	[fp + S_JOB] = r3;      /* (the list's size, for a moment) */
 	call _bvb_dma_reachable;
 	cc = r0 == 0;
 	if cc jump .Ls_direct;
-	/* the layout: list, job, E (three rows), O from the next 4 KB boundary after E's end */
+	/* the layout: list, two jobs, two sections, E (three rows), O from the next 4 KB
+	 * boundary after E's end */
 	r0 = [fp + C_ARG_SCRATCH];
 	r3 = [fp + S_JOB];
 	r0 = r0 + r3;
 	[fp + S_JOB] = r0;
-	r1 = 128;
+	r1 = 256;
+	r0 = r0 + r1;
+	[fp + S_SEC] = r0;      /* section 0 (section 1 follows) */
+	r1 = [fp + S_SECT];
+	r1 <<= 1;
 	r0 = r0 + r1;
 	[fp + S_E] = r0;
 	r4 = [fp + S_RB];
@@ -1330,7 +1365,8 @@ _bvb_harris_nms_stream_asm:
 	r1 = r1 - r0;
 	m0 = r1;                /* G = O - E */
 
-	/* job: bands 0 and 1 into slot 0 and 1 (rows 0, 2 to E, rows 1, 3 to O) */
+	/* job area 0: bands 0 and 1 into slots 0 and 1 (rows 0, 2 to E, rows 1, 3 to O);
+	 * area 1's slot 0 prepared for the bands that follow */
 	r0 = [fp + S_RESP];
 	[fp + S_X + DMAX_SRC] = r0;
 	r0 = [fp + S_SSTR];
@@ -1344,7 +1380,17 @@ _bvb_harris_nms_stream_asm:
 	r0 = 2;
 	[fp + S_X + DMAX_ROWS] = r0;
 	r0 = [fp + S_JOB];
-	r1 = 1;
+	r1 = 128;
+	r0 = r0 + r1;
+	r1 = 0;
+	r2 = fp;
+	r3 = S_X (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	cc = r0 < 0;
+	if cc jump .Ls_direct;
+	r0 = [fp + S_JOB];
+	r1 = 0;
 	r2 = fp;
 	r3 = S_X (x);
 	r2 = r2 + r3;
@@ -1361,11 +1407,11 @@ _bvb_harris_nms_stream_asm:
 	r0 = r0 + r1;
 	[fp + S_X + DMAX_DST] = r0;
 	r0 = [fp + S_JOB];
-	r1 = 0;
+	r1 = 1;
 	r2 = fp;
 	r3 = S_X (x);
 	r2 = r2 + r3;
-	call _bvb_dma_prepare;  /* slot 0 last: the shape every later band re-addresses */
+	call _bvb_dma_prepare;
 	cc = r0 < 0;
 	if cc jump .Ls_direct;
 	r0 = [fp + S_JOB];
@@ -1402,17 +1448,32 @@ _bvb_harris_nms_stream_asm:
 	[fp + S_BSLOT] = r0;
 	r0 = 0;
 	[fp + S_PSLOT] = r0;
+	[fp + S_PREVN] = r0;
+	r0 = [fp + C_ARG_CAND];
+	[fp + S_CPOS] = r0;
+	r0 = 1;
+	[fp + S_AREA] = r0;
+	r0 = -1;
+	[fp + S_CKEY] = r0;
+	[fp + S_CKEY + 4] = r0;
 	r7 = [fp + C_ARG_THR];
 	r6 = -1;
-	p5 = [fp + C_ARG_CAND];
 	m1 = -4;
 	m2 = -16;
 
 .Ls_pair:
-	call _bvb_dma_wait;     /* bands j, j+1 are in */
+	/* the next job, in the area no job runs from: the band after next, the last pair's
+	 * candidates */
+	r0 = [fp + S_AREA];
+	r1 = r0 << 7;
+	r2 = [fp + S_JOB];
+	r1 = r1 + r2;
+	[fp + S_CUR] = r1;
+	r0 = 0;
+	[fp + S_NSLOT] = r0;
 	r0 = [fp + S_BLEFT];
 	cc = r0 == 0;
-	if cc jump .Ls_scan;
+	if cc jump .Ls_cands;
 	r0 += -1;
 	[fp + S_BLEFT] = r0;
 	r0 = [fp + S_SRC];
@@ -1433,16 +1494,43 @@ _bvb_harris_nms_stream_asm:
 	r2 = 0;
 	if cc r0 = r2;
 	[fp + S_BSLOT] = r0;
-	r0 = [fp + S_JOB];
+	r0 = [fp + S_CUR];
 	r1 = 0;
 	r2 = fp;
 	r3 = S_X (x);
 	r2 = r2 + r3;
 	call _bvb_dma_move;
-	r0 = [fp + S_JOB];
-	r1 = 1;
+	r0 = 1;
+	[fp + S_NSLOT] = r0;
+.Ls_cands:
+	r0 = [fp + S_PREVN];
+	cc = r0 == 0;
+	if cc jump .Ls_run;
+	call .Ls_cand_slot;
+.Ls_run:
+	call _bvb_dma_wait;     /* bands j, j+1 are in */
+	r1 = [fp + S_NSLOT];
+	cc = r1 == 0;
+	if cc jump .Ls_scan;
+	r0 = [fp + S_CUR];
 	call _bvb_dma_start;
 .Ls_scan:
+	r0 = [fp + S_AREA];
+	r1 = 1;
+	r0 = r0 ^ r1;
+	[fp + S_AREA] = r0;
+	/* this pair's candidates into the other section than the last pair's */
+	r0 = [fp + S_JOB];
+	r1 = 256;
+	r0 = r0 + r1;           /* section 0 */
+	r1 = [fp + S_AREA];     /* j & 1 now */
+	cc = r1 == 0;
+	r2 = [fp + S_SECT];
+	r1 = 0;
+	if cc r2 = r1;
+	r0 = r0 + r2;
+	[fp + S_SEC] = r0;
+	p5 = r0;
 	/* upper row 2j+1 in O at slot j % 3, lower row 2j+2 in E at slot (j+1) % 3 */
 	r0 = [fp + S_PSLOT];
 	r1 = [fp + S_O];
@@ -1465,6 +1553,11 @@ _bvb_harris_nms_stream_asm:
 	r1 = [fp + C_KEY];
 	b1 = r1;
 	call .Ls_do_pair;
+	r0 = p5;
+	r1 = [fp + S_SEC];
+	r0 = r0 - r1;
+	r0 >>= 3;
+	[fp + S_PREVN] = r0;
 	r0 = [fp + C_KEY];
 	r1 = 2;
 	r1 <<= 16;
@@ -1476,6 +1569,25 @@ _bvb_harris_nms_stream_asm:
 	cc = r0 == 0;
 	if !cc jump .Ls_pair;
 
+	/* the last pair's candidates */
+	call _bvb_dma_wait;
+	r0 = [fp + S_PREVN];
+	cc = r0 == 0;
+	if cc jump .Ls_tail;
+	r0 = [fp + S_AREA];
+	r1 = r0 << 7;
+	r2 = [fp + S_JOB];
+	r1 = r1 + r2;
+	[fp + S_CUR] = r1;
+	r0 = 0;
+	[fp + S_NSLOT] = r0;
+	call .Ls_cand_slot;
+	r0 = [fp + S_CUR];
+	r1 = [fp + S_NSLOT];
+	call _bvb_dma_start;
+	call _bvb_dma_wait;
+.Ls_tail:
+	p5 = [fp + S_CPOS];
 	/* an odd last row, y = h - 2, in SDRAM */
 	r0 = [fp + C_ODDH];
 	cc = r0 == 0;
@@ -1515,6 +1627,85 @@ _bvb_harris_nms_stream_asm:
 	unlink;
 	(r7:4, p5:3) = [sp++];
 	jump.l _bvb_harris_nms_asm;
+
+/* The last pair's S_PREVN candidates (section S_SEC) to cand at S_CPOS, as slot S_NSLOT of
+ * the area at S_CUR: re-addressed, with its X_COUNTs set, when that slot of that area is the
+ * one prepared for candidates (1D, 16-bit elements: every address and length is a multiple
+ * of 4), else prepared first. */
+.Ls_cand_slot:
+	[--sp] = rets;
+	r0 = [fp + S_SEC];
+	[fp + S_X + DMAX_SRC] = r0;
+	r0 = [fp + S_CPOS];
+	[fp + S_X + DMAX_DST] = r0;
+	r1 = [fp + S_PREVN];
+	r1 <<= 3;
+	r0 = r0 + r1;
+	[fp + S_CPOS] = r0;
+	r0 = [fp + S_AREA];
+	r0 <<= 2;
+	r1 = fp;
+	r0 = r0 + r1;
+	p2 = r0;                 /* &S_CKEY[area] - S_CKEY */
+	r0 = [p2 + S_CKEY];
+	r1 = [fp + S_NSLOT];
+	cc = r0 == r1;
+	if !cc jump 1f;
+	r0 = [fp + S_CUR];
+	r2 = fp;
+	r3 = S_X (x);
+	r2 = r2 + r3;
+	call _bvb_dma_move;
+	jump 2f;
+1:	r0 = [fp + S_SECT];
+	[fp + S_X + DMAX_W] = r0;
+	[fp + S_X + DMAX_SS] = r0;
+	[fp + S_X + DMAX_DS] = r0;
+	r0 = 1;
+	[fp + S_X + DMAX_ROWS] = r0;
+	r0 = [fp + S_CUR];
+	r1 = [fp + S_NSLOT];
+	r2 = fp;
+	r3 = S_X (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	r1 = [fp + S_AREA];
+	r1 <<= 2;
+	r2 = fp;
+	r1 = r1 + r2;
+	p2 = r1;
+	r1 = [fp + S_NSLOT];
+	cc = r0 < 0;
+	if cc jump 3f;
+	[p2 + S_CKEY] = r1;
+2:	r1 = [fp + S_NSLOT];
+	r0 = r1 << 4;
+	r1 <<= 1;
+	r0 = r0 - r1;           /* 14 k */
+	r1 = [fp + S_CUR];
+	r0 = r0 + r1;
+	p0 = r0;
+	r0 = [fp + S_PREVN];
+	r0 <<= 2;               /* 16-bit elements */
+	w[p0 + S_DS_XC] = r0;
+	w[p0 + (S_DST_SLOTS + S_DS_XC)] = r0;
+	r1 = [fp + S_NSLOT];
+	r1 += 1;
+	[fp + S_NSLOT] = r1;
+	rets = [sp++];
+	rts;
+3:	/* DMA refused it (none should): the core copies the section */
+	r0 = -1;
+	[p2 + S_CKEY] = r0;
+	p0 = [fp + S_X + DMAX_SRC];
+	p1 = [fp + S_X + DMAX_DST];
+	p2 = [fp + S_PREVN];
+	p2 = p2 + p2;
+	lsetup (4f, 5f) lc1 = p2;
+4:	r0 = [p0++];
+5:	[p1++] = r0;
+	rets = [sp++];
+	rts;
 
 /* One row pair from the ring: B0 its upper row (x = 1), B1 that row's key, M3 = Dp, M0 = G. */
 .Ls_do_pair:
