@@ -1725,7 +1725,56 @@ _bvb_harris_nms_stream_asm:
 	lsetup (.Ls_b_s, .Ls_b_e) lc0 = p2;
 .Ls_b_s: r4 = max (r4, r5);
 	cc = r4 <= r7;
-	if !cc jump .Ls_slow;
+	if cc jump .Ls_back;     /* below the threshold: the jump costs 9, a slow path entered by one 14 */
+	/* above the threshold: bvb_harris_nms_asm's .Lc_slow with the ring's distances; the row
+	 * above an upper winner is G before it and the row below Dp after it; above a lower
+	 * winner Dp before, below G after */
+	i0 += m2;
+	i1 += m2;
+	mnop || r0 = [i0++] || r2 = [i1++];     /* a, c */
+	mnop || r1 = [i0++] || r3 = [i1++];     /* b, d */
+	r4 = 0;
+	r5 = 4;
+	cc = r0 < r1;
+	if cc r0 = r1;
+	if cc r4 = r5;
+	r5 = m3;
+	r1 = r5;
+	r1 += 4;
+	cc = r2 < r3;
+	if cc r2 = r3;
+	if cc r5 = r1;
+	r1 = m0;
+	r3 = m3;
+	cc = r0 < r2;
+	if cc r0 = r2;
+	if cc r4 = r5;                           /* R0 its value, R4 its offset from the block */
+	r5 = r1;
+	if cc r1 = r3;
+	if cc r3 = r5;                           /* R1 the distance up, R3 down */
+	r2 = i0;
+	r2 += -12;
+	r2 = r2 + r4;                            /* the winner - 4 */
+	r5 = r2 - r1;
+	i2 = r5;
+	r5 = r2 + r3;
+	i3 = r5;
+	p0 = r2;
+	mnop || r1 = [i2++] || r2 = [i3++];      /* u0, d0 */
+	mnop || r3 = [i2++] || r5 = [i3++];      /* u1, d1 */
+	r1 = max (r1, r3) || r3 = [i2++];        /* u2 */
+	r2 = max (r2, r5) || r5 = [i3++];        /* d2 */
+	r1 = max (r1, r3) || r3 = [p0++];        /* l */
+	r2 = max (r2, r5) || r5 = [p0++];        /* (v) */
+	r1 = max (r1, r3) || r3 = [p0];          /* r */
+	r2 = max (r2, r3);
+	r2 = r2 + r6 (ns);
+	r1 = max (r1, r2);
+	cc = r1 < r0;
+	if cc jump .Ls_found;
+.Ls_resume:
+	mnop || r0 = [i0++] || r2 = [i1++];      /* the next block, as the loop left it */
+	mnop || r1 = [i0++] || r3 = [i1++];
 .Ls_back:
 	r4 = max (r0, r2) || r0 = [i0++] || r2 = [i1++];
 .Ls_b_e: r5 = max (r1, r3) || r1 = [i0++] || r3 = [i1++];
@@ -1775,57 +1824,7 @@ _bvb_harris_nms_stream_asm:
 4:	rets = [sp++];
 	rts;
 
-/* A 2x2 block above the threshold (bvb_harris_nms_asm's .Lc_slow with the ring's distances):
- * the row above an upper winner is G before it and the row below Dp after it; above a lower
- * winner Dp before, below G after. */
-.Ls_slow:
-	i0 += m2;
-	i1 += m2;
-	mnop || r0 = [i0++] || r2 = [i1++];     /* a, c */
-	mnop || r1 = [i0++] || r3 = [i1++];     /* b, d */
-	r4 = 0;
-	r5 = 4;
-	cc = r0 < r1;
-	if cc r0 = r1;
-	if cc r4 = r5;
-	r5 = m3;
-	r1 = r5;
-	r1 += 4;
-	cc = r2 < r3;
-	if cc r2 = r3;
-	if cc r5 = r1;
-	r1 = m0;
-	r3 = m3;
-	cc = r0 < r2;
-	if cc r0 = r2;
-	if cc r4 = r5;                           /* R0 its value, R4 its offset from the block */
-	r5 = r1;
-	if cc r1 = r3;
-	if cc r3 = r5;                           /* R1 the distance up, R3 down */
-	r2 = i0;
-	r2 += -12;
-	r2 = r2 + r4;                            /* the winner - 4 */
-	r5 = r2 - r1;
-	i2 = r5;
-	r5 = r2 + r3;
-	i3 = r5;
-	p0 = r2;
-	mnop || r1 = [i2++] || r2 = [i3++];      /* u0, d0 */
-	mnop || r3 = [i2++] || r5 = [i3++];      /* u1, d1 */
-	r1 = max (r1, r3) || r3 = [i2++];        /* u2 */
-	r2 = max (r2, r5) || r5 = [i3++];        /* d2 */
-	r1 = max (r1, r3) || r3 = [p0++];        /* l */
-	r2 = max (r2, r5) || r5 = [p0++];        /* (v) */
-	r1 = max (r1, r3) || r3 = [p0];          /* r */
-	r2 = max (r2, r3);
-	r2 = r2 + r6 (ns);
-	r1 = max (r1, r2);
-	cc = r1 < r0;
-	if cc jump .Ls_found;
-.Ls_resume:
-	mnop || r0 = [i0++] || r2 = [i1++];
-	mnop || r1 = [i0++] || r3 = [i1++];
-	jump .Ls_back;
+/* The winner is a candidate: into the section if it is in the upper row, else to wait. */
 .Ls_found:
 	r1 = i0;
 	r1 += -8;
