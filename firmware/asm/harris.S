@@ -1328,8 +1328,8 @@ _bvb_harris_nms_stream_asm:
 	r2 += 8;
 	[fp + S_SECT] = r2;     /* a pair's candidates, at most (w - 2) / 2 + 2 */
 	r1 = [fp + C_W];
-	r2 = 24;
-	r1 *= r2;               /* the six ring rows */
+	r2 = 32;
+	r1 *= r2;               /* the eight ring rows */
 	r2 = r3 + r3;
 	r2 = r2 + r3;
 	r1 = r1 + r2;
@@ -1354,9 +1354,8 @@ _bvb_harris_nms_stream_asm:
 	r0 = r0 + r1;
 	[fp + S_E] = r0;
 	r4 = [fp + S_RB];
-	r1 = r4 + r4;
-	r1 = r1 + r4;
-	r1 = r0 + r1;           /* E + 3 RB */
+	r1 = r4 << 2;
+	r1 = r0 + r1;           /* E + 4 RB */
 	r2 = 4095;
 	r1 = r1 + r2;
 	r2 = ~r2;
@@ -1414,8 +1413,31 @@ _bvb_harris_nms_stream_asm:
 	call _bvb_dma_prepare;
 	cc = r0 < 0;
 	if cc jump .Ls_direct;
+	/* and band 2 (slot 2) when there is one (h >= 6): the scan then runs a band ahead */
+	r1 = 2;
+	r0 = [fp + S_H];
+	r2 = 6;
+	cc = r0 < r2;
+	if cc jump 1f;
+	r0 = [fp + S_X + DMAX_SRC];
+	r1 = [fp + S_SSTR];
+	r1 <<= 1;
+	r0 = r0 + r1;
+	[fp + S_X + DMAX_SRC] = r0;
+	r0 = [fp + S_X + DMAX_DST];
+	r1 = [fp + S_RB];
+	r0 = r0 + r1;
+	[fp + S_X + DMAX_DST] = r0;
 	r0 = [fp + S_JOB];
 	r1 = 2;
+	r2 = fp;
+	r3 = S_X (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	cc = r0 < 0;
+	if cc jump .Ls_direct;
+	r1 = 3;
+1:	r0 = [fp + S_JOB];
 	call _bvb_dma_start;
 
 	/* the scan's state, as bvb_harris_nms_asm's */
@@ -1426,8 +1448,10 @@ _bvb_harris_nms_stream_asm:
 	[fp + C_ODDH] = r0;
 	r2 >>= 1;
 	[fp + C_PAIRS] = r2;    /* >= 1 */
-	r2 += -1;
-	[fp + S_BLEFT] = r2;    /* bands 2 .. pairs */
+	r2 += -2;
+	r0 = 0;
+	r2 = max (r2, r0);
+	[fp + S_BLEFT] = r2;    /* bands 3 .. pairs */
 	r0 = 1;
 	r0 <<= 16;
 	r0 += 1;
@@ -1440,11 +1464,14 @@ _bvb_harris_nms_stream_asm:
 	[fp + C_NB] = r1;
 	r0 = [fp + S_RESP];
 	r1 = [fp + S_SSTR];
+	r2 = r1 << 1;
+	r0 = r0 + r2;
 	r1 <<= 2;
 	r0 = r0 + r1;
-	[fp + S_SRC] = r0;      /* band 2 */
+	[fp + S_SRC] = r0;      /* band 3, rows 6 and 7 */
 	r0 = [fp + S_RB];
-	r0 <<= 1;
+	r1 = r0 << 1;
+	r0 = r0 + r1;
 	[fp + S_BSLOT] = r0;
 	r0 = 0;
 	[fp + S_PSLOT] = r0;
@@ -1488,8 +1515,7 @@ _bvb_harris_nms_stream_asm:
 	[fp + S_X + DMAX_DST] = r1;
 	r1 = [fp + S_RB];
 	r0 = r0 + r1;
-	r2 = r1 + r1;
-	r2 = r2 + r1;
+	r2 = r1 << 2;
 	cc = r0 == r2;
 	r2 = 0;
 	if cc r0 = r2;
@@ -1539,8 +1565,7 @@ _bvb_harris_nms_stream_asm:
 	b0 = r1;
 	r2 = [fp + S_RB];
 	r0 = r0 + r2;
-	r3 = r2 + r2;
-	r3 = r3 + r2;
+	r3 = r2 << 2;
 	cc = r0 == r3;
 	r3 = 0;
 	if cc r0 = r3;
@@ -1756,25 +1781,25 @@ _bvb_harris_nms_stream_asm:
 	r2 += -12;
 	r2 = r2 + r4;                            /* the winner - 4 */
 	r5 = r2 - r1;
-	i2 = r5;
+	i2 = r5;                                 /* the row above, from the winner's left */
 	r5 = r2 + r3;
-	i3 = r5;
+	i3 = r5;                                 /* the row below */
 	p0 = r2;
-	mnop || r1 = [i2++] || r2 = [i3++];      /* u0, d0 */
-	mnop || r3 = [i2++] || r5 = [i3++];      /* u1, d1 */
-	r1 = max (r1, r3) || r3 = [i2++];        /* u2 */
-	r2 = max (r2, r5) || r5 = [i3++];        /* d2 */
-	r1 = max (r1, r3) || r3 = [p0++];        /* l */
-	r2 = max (r2, r5) || r5 = [p0++];        /* (v) */
-	r1 = max (r1, r3) || r3 = [p0];          /* r */
-	r2 = max (r2, r3);
-	r2 = r2 + r6 (ns);
-	r1 = max (r1, r2);
-	cc = r1 < r0;
+	r4 = r0;                                 /* the winner's value */
+	mnop || r0 = [i0++] || r2 = [i1++];      /* the next block, as the loop left it, while */
+	mnop || r1 = [i0++] || r3 = [i1++];      /* I2, I3 and P0 become usable */
+	mnop || r5 = [i2++] || r6 = [i3++];      /* u0, d0 */
+	r7 = [i2++];                             /* u1 */
+	r5 = max (r5, r7) || r7 = [i2++];        /* u2 */
+	r5 = max (r5, r7) || r7 = [i3++];        /* d1 */
+	r6 = max (r6, r7) || r7 = [i3++];        /* d2 */
+	r6 = max (r6, r7) || r7 = [p0];          /* l */
+	r5 = max (r5, r7) || r7 = [p0 + 8];      /* r */
+	r6 = max (r6, r7);
+	r6 += -1;                                /* after the winner: >= is enough */
+	r5 = max (r5, r6) || r7 = [fp + C_ARG_THR];
+	cc = r5 < r4;
 	if cc jump .Ls_found;
-.Ls_resume:
-	mnop || r0 = [i0++] || r2 = [i1++];      /* the next block, as the loop left it */
-	mnop || r1 = [i0++] || r3 = [i1++];
 .Ls_back:
 	r4 = max (r0, r2) || r0 = [i0++] || r2 = [i1++];
 .Ls_b_e: r5 = max (r1, r3) || r1 = [i0++] || r3 = [i1++];
@@ -1826,31 +1851,30 @@ _bvb_harris_nms_stream_asm:
 
 /* The winner is a candidate: into the section if it is in the upper row, else to wait. */
 .Ls_found:
-	r1 = i0;
-	r1 += -8;
-	r2 = b0;
-	r1 = r1 - r2;
-	r1 >>= 2;
-	r2 = b1;
-	r1 = r1 + r2;
-	r2 = 4;
-	cc = r4 <= r2 (iu);                      /* upper row: offset 0 or 4 (Dp is negative) */
+	r5 = p0;
+	r5 += 4;
+	r6 = b0;
+	r5 = r5 - r6;                            /* the winner - B0: 4 (x - 1) in the upper row */
+	r6 = [fp + S_RB];
+	cc = r5 < r6 (iu);                       /* (in the lower row below 0: Dp <= -RB) */
 	if !cc jump 1f;
-	r4 >>= 2;
-	r1 = r1 + r4;
-	[p5++] = r1;
-	[p5++] = r0;
-	jump .Ls_resume;
-1:	r2 = m3;
-	r4 = r4 - r2;
-	r4 >>= 2;
-	r1 = r1 + r4;
-	r2 = 1;
-	r2 <<= 16;
-	r1 = r1 + r2;
-	[p3++] = r1;
-	[p3++] = r0;
-	jump .Ls_resume;
+	r5 >>= 2;
+	r6 = b1;
+	r5 = r5 + r6;
+	[p5++] = r5;
+	[p5++] = r4;
+	jump .Ls_back;
+1:	r6 = m3;
+	r5 = r5 - r6;
+	r5 >>= 2;
+	r6 = b1;
+	r5 = r5 + r6;
+	r6 = 1;
+	r6 <<= 16;
+	r5 = r5 + r6;
+	[p3++] = r5;
+	[p3++] = r4;
+	jump .Ls_back;
 
 /* .Lc_pix with the distance to the row above in B2 and to the row below in B3. */
 .Ls_pix:
@@ -1877,7 +1901,7 @@ _bvb_harris_nms_stream_asm:
 	r0 = max (r0, r2) || r2 = [p0++p1];
 	r1 = max (r1, r4);
 	r1 = max (r1, r2);
-	r1 = r1 + r6 (ns);
+	r1 += -1;
 	r0 = max (r0, r1);
 	cc = r0 < r3;
 	if !cc jump .Ls_p_e (bp);
