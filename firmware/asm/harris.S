@@ -1328,8 +1328,8 @@ _bvb_harris_nms_stream_asm:
 	r2 += 8;
 	[fp + S_SECT] = r2;     /* a pair's candidates, at most (w - 2) / 2 + 2 */
 	r1 = [fp + C_W];
-	r2 = 32;
-	r1 *= r2;               /* the eight ring rows */
+	r2 = 24;
+	r1 *= r2;               /* the six ring rows */
 	r2 = r3 + r3;
 	r2 = r2 + r3;
 	r1 = r1 + r2;
@@ -1354,8 +1354,9 @@ _bvb_harris_nms_stream_asm:
 	r0 = r0 + r1;
 	[fp + S_E] = r0;
 	r4 = [fp + S_RB];
-	r1 = r4 << 2;
-	r1 = r0 + r1;           /* E + 4 RB */
+	r1 = r4 + r4;
+	r1 = r1 + r4;
+	r1 = r0 + r1;           /* E + 3 RB */
 	r2 = 4095;
 	r1 = r1 + r2;
 	r2 = ~r2;
@@ -1413,31 +1414,8 @@ _bvb_harris_nms_stream_asm:
 	call _bvb_dma_prepare;
 	cc = r0 < 0;
 	if cc jump .Ls_direct;
-	/* and band 2 (slot 2) when there is one (h >= 6): the scan then runs a band ahead */
-	r1 = 2;
-	r0 = [fp + S_H];
-	r2 = 6;
-	cc = r0 < r2;
-	if cc jump 1f;
-	r0 = [fp + S_X + DMAX_SRC];
-	r1 = [fp + S_SSTR];
-	r1 <<= 1;
-	r0 = r0 + r1;
-	[fp + S_X + DMAX_SRC] = r0;
-	r0 = [fp + S_X + DMAX_DST];
-	r1 = [fp + S_RB];
-	r0 = r0 + r1;
-	[fp + S_X + DMAX_DST] = r0;
 	r0 = [fp + S_JOB];
 	r1 = 2;
-	r2 = fp;
-	r3 = S_X (x);
-	r2 = r2 + r3;
-	call _bvb_dma_prepare;
-	cc = r0 < 0;
-	if cc jump .Ls_direct;
-	r1 = 3;
-1:	r0 = [fp + S_JOB];
 	call _bvb_dma_start;
 
 	/* the scan's state, as bvb_harris_nms_asm's */
@@ -1448,10 +1426,8 @@ _bvb_harris_nms_stream_asm:
 	[fp + C_ODDH] = r0;
 	r2 >>= 1;
 	[fp + C_PAIRS] = r2;    /* >= 1 */
-	r2 += -2;
-	r0 = 0;
-	r2 = max (r2, r0);
-	[fp + S_BLEFT] = r2;    /* bands 3 .. pairs */
+	r2 += -1;
+	[fp + S_BLEFT] = r2;    /* bands 2 .. pairs */
 	r0 = 1;
 	r0 <<= 16;
 	r0 += 1;
@@ -1464,14 +1440,11 @@ _bvb_harris_nms_stream_asm:
 	[fp + C_NB] = r1;
 	r0 = [fp + S_RESP];
 	r1 = [fp + S_SSTR];
-	r2 = r1 << 1;
-	r0 = r0 + r2;
 	r1 <<= 2;
 	r0 = r0 + r1;
-	[fp + S_SRC] = r0;      /* band 3, rows 6 and 7 */
+	[fp + S_SRC] = r0;
 	r0 = [fp + S_RB];
-	r1 = r0 << 1;
-	r0 = r0 + r1;
+	r0 <<= 1;
 	[fp + S_BSLOT] = r0;
 	r0 = 0;
 	[fp + S_PSLOT] = r0;
@@ -1515,7 +1488,8 @@ _bvb_harris_nms_stream_asm:
 	[fp + S_X + DMAX_DST] = r1;
 	r1 = [fp + S_RB];
 	r0 = r0 + r1;
-	r2 = r1 << 2;
+	r2 = r1 + r1;
+	r2 = r2 + r1;
 	cc = r0 == r2;
 	r2 = 0;
 	if cc r0 = r2;
@@ -1565,7 +1539,8 @@ _bvb_harris_nms_stream_asm:
 	b0 = r1;
 	r2 = [fp + S_RB];
 	r0 = r0 + r2;
-	r3 = r2 << 2;
+	r3 = r2 + r2;
+	r3 = r3 + r2;
 	cc = r0 == r3;
 	r3 = 0;
 	if cc r0 = r3;
