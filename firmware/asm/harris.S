@@ -1260,8 +1260,10 @@ _bvb_harris_nms_asm:
 #define S_CKEY   -100  /* per area, the slot prepared for candidates (-1: none) */
 #define S_CUR    -104  /* the area being built */
 #define S_NSLOT  -108  /* its slots */
-#define S_X      -132  /* struct bvb_dma_xfer */
-#define S_SIZE   132
+#define S_KU     -112  /* key - (the winner - 4) / 4 in the upper row */
+#define S_KL     -116  /* ... in the lower row */
+#define S_X      -140  /* struct bvb_dma_xfer */
+#define S_SIZE   140
 /* bvb/dma.h's descriptor layout: X_COUNT is halfword 3 of each 7-halfword descriptor, the
  * destination's descriptors BVB_DMA_MAX_XFERS * 14 bytes after the source's. */
 #define S_DS_XC  6
@@ -1550,8 +1552,20 @@ _bvb_harris_nms_stream_asm:
 	r2 += 4;
 	r2 = r2 - r1;
 	m3 = r2;                /* Dp */
-	r1 = [fp + C_KEY];
-	b1 = r1;
+	r3 = [fp + C_KEY];
+	b1 = r3;
+	/* the keys from the winner's address - 4 (P0 in .Ls_found): x = (W - B0) / 4 + 1 */
+	r3 += 1;
+	r0 = r1 >> 2;
+	r0 = r3 - r0;
+	[fp + S_KU] = r0;
+	r1 = r1 + r2;           /* the lower row's B0 */
+	r1 >>= 2;
+	r3 = r3 - r1;
+	r1 = 1;
+	r1 <<= 16;
+	r3 = r3 + r1;
+	[fp + S_KL] = r3;
 	call .Ls_do_pair;
 	r0 = p5;
 	r1 = [fp + S_SEC];
@@ -1827,25 +1841,16 @@ _bvb_harris_nms_stream_asm:
 /* The winner is a candidate: into the section if it is in the upper row, else to wait. */
 .Ls_found:
 	r5 = p0;
-	r5 += 4;
-	r6 = b0;
-	r5 = r5 - r6;                            /* the winner - B0: 4 (x - 1) in the upper row */
-	r6 = [fp + S_RB];
-	cc = r5 < r6 (iu);                       /* (in the lower row below 0: Dp <= -RB) */
-	if !cc jump 1f;
+	r6 = [fp + S_O];
+	cc = r5 < r6 (iu);                       /* the lower row (region E, before O) */
 	r5 >>= 2;
-	r6 = b1;
+	if cc jump 1f;
+	r6 = [fp + S_KU];
 	r5 = r5 + r6;
 	[p5++] = r5;
 	[p5++] = r4;
 	jump .Ls_back;
-1:	r6 = m3;
-	r5 = r5 - r6;
-	r5 >>= 2;
-	r6 = b1;
-	r5 = r5 + r6;
-	r6 = 1;
-	r6 <<= 16;
+1:	r6 = [fp + S_KL];
 	r5 = r5 + r6;
 	[p3++] = r5;
 	[p3++] = r4;
