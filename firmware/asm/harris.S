@@ -1771,19 +1771,19 @@ _bvb_harris_nms_stream_asm:
 	r2 = r2 + r4;                            /* the winner - 4 */
 	r5 = r2 - r1;
 	i2 = r5;                                 /* the row above, from the winner's left */
+	p0 = r2;
 	r5 = r2 + r3;
 	i3 = r5;                                 /* the row below */
-	p0 = r2;
 	r4 = r0;                                 /* the winner's value */
 	mnop || r0 = [i0++] || r2 = [i1++];      /* the next block, as the loop left it, while */
 	mnop || r1 = [i0++] || r3 = [i1++];      /* I2, I3 and P0 become usable */
-	mnop || r5 = [i2++] || r6 = [i3++];      /* u0, d0 */
-	r7 = [i2++];                             /* u1 */
+	/* the rows above and below share a region: each pairs with a load of the winner's row */
+	mnop || r5 = [i2++] || r7 = [p0];        /* u0, l */
+	r5 = max (r5, r7) || r6 = [i3++] || r7 = [p0 + 8];  /* d0, r */
+	r6 = max (r6, r7) || r7 = [i2++];        /* u1 */
 	r5 = max (r5, r7) || r7 = [i2++];        /* u2 */
 	r5 = max (r5, r7) || r7 = [i3++];        /* d1 */
 	r6 = max (r6, r7) || r7 = [i3++];        /* d2 */
-	r6 = max (r6, r7) || r7 = [p0];          /* l */
-	r5 = max (r5, r7) || r7 = [p0 + 8];      /* r */
 	r6 = max (r6, r7);
 	r6 += -1;                                /* after the winner: >= is enough */
 	r5 = max (r5, r6) || r7 = [fp + C_ARG_THR];
