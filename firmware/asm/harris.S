@@ -1262,8 +1262,10 @@ _bvb_harris_nms_asm:
 #define S_NSLOT  -108  /* its slots */
 #define S_KU     -112  /* key - (the winner - 4) / 4 in the upper row */
 #define S_KL     -116  /* ... in the lower row */
-#define S_X      -140  /* struct bvb_dma_xfer */
-#define S_SIZE   140
+#define S_RING   -120  /* bytes of a ring region, 5 RB */
+#define S_J      -124  /* the pair */
+#define S_X      -148  /* struct bvb_dma_xfer */
+#define S_SIZE   148
 /* bvb/dma.h's descriptor layout: X_COUNT is halfword 3 of each 7-halfword descriptor, the
  * destination's descriptors BVB_DMA_MAX_XFERS * 14 bytes after the source's. */
 #define S_DS_XC  6
@@ -1328,21 +1330,22 @@ _bvb_harris_nms_stream_asm:
 	r3 += 8;                /* the waiting list, BVB_HARRIS_NMS_SCRATCH_BYTES */
 	r2 = r3;
 	r2 += 8;
-	[fp + S_SECT] = r2;     /* a pair's candidates, at most (w - 2) / 2 + 2 */
+	r2 <<= 1;
+	[fp + S_SECT] = r2;     /* two pairs' candidates, at most (w - 2) / 2 + 2 each */
 	r1 = [fp + C_W];
-	r2 = 24;
-	r1 *= r2;               /* the six ring rows */
-	r2 = r3 + r3;
+	r2 = 40;
+	r1 *= r2;               /* the ten ring rows */
+	r2 = r3 << 2;
 	r2 = r2 + r3;
 	r1 = r1 + r2;
-	r2 = 4384 (z);          /* the sections' 16, two jobs (256), the gap to O's boundary (< 4096), a pad (16) */
+	r2 = 4399 (z);          /* the sections' 32, two jobs (256), the gap to O's boundary (< 4096), a pad (16) */
 	r1 = r1 + r2;
 	r0 = [fp + C_ARG_SCRATCH];
 	[fp + S_JOB] = r3;      /* (the list's size, for a moment) */
 	call _bvb_dma_reachable;
 	cc = r0 == 0;
 	if cc jump .Ls_direct;
-	/* the layout: list, two jobs, two sections, E (three rows), O from the next 4 KB
+	/* the layout: list, two jobs, two sections, E (five rows), O from the next 4 KB
 	 * boundary after E's end */
 	r0 = [fp + C_ARG_SCRATCH];
 	r3 = [fp + S_JOB];
@@ -1351,14 +1354,16 @@ _bvb_harris_nms_stream_asm:
 	r1 = 256;
 	r0 = r0 + r1;
 	[fp + S_SEC] = r0;      /* section 0 (section 1 follows) */
+	p5 = r0;
 	r1 = [fp + S_SECT];
 	r1 <<= 1;
 	r0 = r0 + r1;
 	[fp + S_E] = r0;
 	r4 = [fp + S_RB];
-	r1 = r4 + r4;
+	r1 = r4 << 2;
 	r1 = r1 + r4;
-	r1 = r0 + r1;           /* E + 3 RB */
+	[fp + S_RING] = r1;     /* 5 RB */
+	r1 = r0 + r1;           /* E + 5 RB */
 	r2 = 4095;
 	r1 = r1 + r2;
 	r2 = ~r2;
@@ -1367,8 +1372,9 @@ _bvb_harris_nms_stream_asm:
 	r1 = r1 - r0;
 	m0 = r1;                /* G = O - E */
 
-	/* job area 0: bands 0 and 1 into slots 0 and 1 (rows 0, 2 to E, rows 1, 3 to O);
-	 * area 1's slot 0 prepared for the bands that follow */
+	/* job area 0: row pairs 0, 1 and 2 (when the map has them) into slots 0, 1, 2 (rows
+	 * 0, 2, 4 to E, rows 1, 3, 5 to O); area 1's slots 0 and 1 prepared for the row pairs
+	 * that follow */
 	r0 = [fp + S_RESP];
 	[fp + S_X + DMAX_SRC] = r0;
 	r0 = [fp + S_SSTR];
@@ -1381,43 +1387,30 @@ _bvb_harris_nms_stream_asm:
 	[fp + S_X + DMAX_W] = r0;
 	r0 = 2;
 	[fp + S_X + DMAX_ROWS] = r0;
-	r0 = [fp + S_JOB];
-	r1 = 128;
-	r0 = r0 + r1;
+	r0 = 128;
 	r1 = 0;
-	r2 = fp;
-	r3 = S_X (x);
-	r2 = r2 + r3;
-	call _bvb_dma_prepare;
-	cc = r0 < 0;
-	if cc jump .Ls_direct;
-	r0 = [fp + S_JOB];
-	r1 = 0;
-	r2 = fp;
-	r3 = S_X (x);
-	r2 = r2 + r3;
-	call _bvb_dma_prepare;
-	cc = r0 < 0;
-	if cc jump .Ls_direct;
-	r0 = [fp + S_RESP];
-	r1 = [fp + S_SSTR];
-	r1 <<= 1;
-	r0 = r0 + r1;
-	[fp + S_X + DMAX_SRC] = r0;
-	r0 = [fp + S_E];
-	r1 = [fp + S_RB];
-	r0 = r0 + r1;
-	[fp + S_X + DMAX_DST] = r0;
-	r0 = [fp + S_JOB];
+	call .Ls_prep;
+	r0 = 128;
 	r1 = 1;
-	r2 = fp;
-	r3 = S_X (x);
-	r2 = r2 + r3;
-	call _bvb_dma_prepare;
-	cc = r0 < 0;
-	if cc jump .Ls_direct;
-	r0 = [fp + S_JOB];
+	call .Ls_prep;
+	r0 = 0;
+	r1 = 0;
+	call .Ls_prep;
+	call .Ls_next_rp;
+	r0 = 0;
+	r1 = 1;
+	call .Ls_prep;
 	r1 = 2;
+	r0 = [fp + S_H];
+	r2 = 6;
+	cc = r0 < r2;
+	if cc jump 1f;          /* h < 6: row pairs 0 and 1 are all */
+	call .Ls_next_rp;
+	r0 = 0;
+	r1 = 2;
+	call .Ls_prep;
+	r1 = 3;
+1:	r0 = [fp + S_JOB];
 	call _bvb_dma_start;
 
 	/* the scan's state, as bvb_harris_nms_asm's */
@@ -1428,8 +1421,10 @@ _bvb_harris_nms_stream_asm:
 	[fp + C_ODDH] = r0;
 	r2 >>= 1;
 	[fp + C_PAIRS] = r2;    /* >= 1 */
-	r2 += -1;
-	[fp + S_BLEFT] = r2;    /* bands 2 .. pairs */
+	r2 += -2;
+	r0 = 0;
+	r2 = max (r2, r0);
+	[fp + S_BLEFT] = r2;    /* row pairs 3 .. pairs */
 	r0 = 1;
 	r0 <<= 16;
 	r0 += 1;
@@ -1442,15 +1437,19 @@ _bvb_harris_nms_stream_asm:
 	[fp + C_NB] = r1;
 	r0 = [fp + S_RESP];
 	r1 = [fp + S_SSTR];
+	r2 = r1 << 1;
+	r0 = r0 + r2;
 	r1 <<= 2;
 	r0 = r0 + r1;
-	[fp + S_SRC] = r0;
+	[fp + S_SRC] = r0;      /* row pair 3: rows 6 and 7 */
 	r0 = [fp + S_RB];
-	r0 <<= 1;
+	r1 = r0 << 1;
+	r0 = r0 + r1;
 	[fp + S_BSLOT] = r0;
 	r0 = 0;
 	[fp + S_PSLOT] = r0;
 	[fp + S_PREVN] = r0;
+	[fp + S_J] = r0;
 	r0 = [fp + C_ARG_CAND];
 	[fp + S_CPOS] = r0;
 	r0 = 1;
@@ -1459,13 +1458,21 @@ _bvb_harris_nms_stream_asm:
 	[fp + S_CKEY] = r0;
 	[fp + S_CKEY + 4] = r0;
 	r7 = [fp + C_ARG_THR];
-	r6 = -1;
 	m1 = -4;
 	m2 = -16;
 
 .Ls_pair:
-	/* the next job, in the area no job runs from: the band after next, the last pair's
-	 * candidates */
+	/* every other pair (j even), the next job, built in the area no job runs from: the row
+	 * pairs j+3 and j+4, the candidates of pairs j-2 and j-1; then the wait for the last job
+	 * (row pairs j+1 and j+2), its start. Each job has two pairs' scans to run under. */
+	r0 = [fp + S_J];
+	cc = bittst (r0, 0);
+	if cc jump .Ls_scan;
+	r0 = p5;
+	r1 = [fp + S_SEC];
+	r0 = r0 - r1;
+	r0 >>= 3;
+	[fp + S_PREVN] = r0;
 	r0 = [fp + S_AREA];
 	r1 = r0 << 7;
 	r2 = [fp + S_JOB];
@@ -1473,59 +1480,28 @@ _bvb_harris_nms_stream_asm:
 	[fp + S_CUR] = r1;
 	r0 = 0;
 	[fp + S_NSLOT] = r0;
-	r0 = [fp + S_BLEFT];
-	cc = r0 == 0;
-	if cc jump .Ls_cands;
-	r0 += -1;
-	[fp + S_BLEFT] = r0;
-	r0 = [fp + S_SRC];
-	[fp + S_X + DMAX_SRC] = r0;
-	r1 = [fp + S_SSTR];
-	r1 <<= 1;
-	r0 = r0 + r1;
-	[fp + S_SRC] = r0;
-	r0 = [fp + S_BSLOT];
-	r1 = [fp + S_E];
-	r1 = r1 + r0;
-	[fp + S_X + DMAX_DST] = r1;
-	r1 = [fp + S_RB];
-	r0 = r0 + r1;
-	r2 = r1 + r1;
-	r2 = r2 + r1;
-	cc = r0 == r2;
-	r2 = 0;
-	if cc r0 = r2;
-	[fp + S_BSLOT] = r0;
-	r0 = [fp + S_CUR];
-	r1 = 0;
-	r2 = fp;
-	r3 = S_X (x);
-	r2 = r2 + r3;
-	call _bvb_dma_move;
-	r0 = 1;
-	[fp + S_NSLOT] = r0;
-.Ls_cands:
+	call .Ls_band;
+	call .Ls_band;
 	r0 = [fp + S_PREVN];
 	cc = r0 == 0;
 	if cc jump .Ls_run;
 	call .Ls_cand_slot;
 .Ls_run:
-	call _bvb_dma_wait;     /* bands j, j+1 are in */
+	call _bvb_dma_wait;     /* row pairs up to j+2 are in */
 	r1 = [fp + S_NSLOT];
 	cc = r1 == 0;
-	if cc jump .Ls_scan;
+	if cc jump 1f;
 	r0 = [fp + S_CUR];
 	call _bvb_dma_start;
-.Ls_scan:
-	r0 = [fp + S_AREA];
+1:	r0 = [fp + S_AREA];
 	r1 = 1;
 	r0 = r0 ^ r1;
 	[fp + S_AREA] = r0;
-	/* this pair's candidates into the other section than the last pair's */
+	/* pairs j and j+1's candidates into the other section than the last two pairs' */
 	r0 = [fp + S_JOB];
 	r1 = 256;
 	r0 = r0 + r1;           /* section 0 */
-	r1 = [fp + S_AREA];     /* j & 1 now */
+	r1 = [fp + S_AREA];     /* (j / 2) & 1 now */
 	cc = r1 == 0;
 	r2 = [fp + S_SECT];
 	r1 = 0;
@@ -1533,7 +1509,8 @@ _bvb_harris_nms_stream_asm:
 	r0 = r0 + r2;
 	[fp + S_SEC] = r0;
 	p5 = r0;
-	/* upper row 2j+1 in O at slot j % 3, lower row 2j+2 in E at slot (j+1) % 3 */
+.Ls_scan:
+	/* upper row 2j+1 in O at slot j % 5, lower row 2j+2 in E at slot (j+1) % 5 */
 	r0 = [fp + S_PSLOT];
 	r1 = [fp + S_O];
 	r1 = r1 + r0;
@@ -1541,8 +1518,7 @@ _bvb_harris_nms_stream_asm:
 	b0 = r1;
 	r2 = [fp + S_RB];
 	r0 = r0 + r2;
-	r3 = r2 + r2;
-	r3 = r3 + r2;
+	r3 = [fp + S_RING];
 	cc = r0 == r3;
 	r3 = 0;
 	if cc r0 = r3;
@@ -1567,11 +1543,9 @@ _bvb_harris_nms_stream_asm:
 	r3 = r3 + r1;
 	[fp + S_KL] = r3;
 	call .Ls_do_pair;
-	r0 = p5;
-	r1 = [fp + S_SEC];
-	r0 = r0 - r1;
-	r0 >>= 3;
-	[fp + S_PREVN] = r0;
+	r0 = [fp + S_J];
+	r0 += 1;
+	[fp + S_J] = r0;
 	r0 = [fp + C_KEY];
 	r1 = 2;
 	r1 <<= 16;
@@ -1582,6 +1556,11 @@ _bvb_harris_nms_stream_asm:
 	[fp + C_PAIRS] = r0;
 	cc = r0 == 0;
 	if !cc jump .Ls_pair;
+	r0 = p5;
+	r1 = [fp + S_SEC];
+	r0 = r0 - r1;
+	r0 >>= 3;
+	[fp + S_PREVN] = r0;
 
 	/* the last pair's candidates */
 	call _bvb_dma_wait;
@@ -1641,6 +1620,72 @@ _bvb_harris_nms_stream_asm:
 	unlink;
 	(r7:4, p5:3) = [sp++];
 	jump.l _bvb_harris_nms_asm;
+
+/* Slot R1 of job area R0 (byte offset 0 or 128) prepared for S_X (the initial jobs); refused:
+ * the direct path. */
+.Ls_prep:
+	[--sp] = rets;
+	r2 = [fp + S_JOB];
+	r0 = r0 + r2;
+	r2 = fp;
+	r3 = S_X (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	rets = [sp++];
+	cc = r0 < 0;
+	if cc jump 1f;
+	rts;
+1:	jump.l .Ls_direct;       /* (its UNLINK drops this call's return) */
+
+/* S_X one row pair (2 rows) further down the map and the ring. */
+.Ls_next_rp:
+	r0 = [fp + S_X + DMAX_SRC];
+	r1 = [fp + S_SSTR];
+	r1 <<= 1;
+	r0 = r0 + r1;
+	[fp + S_X + DMAX_SRC] = r0;
+	r0 = [fp + S_X + DMAX_DST];
+	r1 = [fp + S_RB];
+	r0 = r0 + r1;
+	[fp + S_X + DMAX_DST] = r0;
+	rts;
+
+/* The next row pair to bring, when one is left, as slot S_NSLOT of the area at S_CUR. */
+.Ls_band:
+	r0 = [fp + S_BLEFT];
+	cc = r0 == 0;
+	if cc jump 1f;
+	[--sp] = rets;
+	r0 += -1;
+	[fp + S_BLEFT] = r0;
+	r0 = [fp + S_SRC];
+	[fp + S_X + DMAX_SRC] = r0;
+	r1 = [fp + S_SSTR];
+	r1 <<= 1;
+	r0 = r0 + r1;
+	[fp + S_SRC] = r0;
+	r0 = [fp + S_BSLOT];
+	r1 = [fp + S_E];
+	r1 = r1 + r0;
+	[fp + S_X + DMAX_DST] = r1;
+	r1 = [fp + S_RB];
+	r0 = r0 + r1;
+	r2 = [fp + S_RING];
+	cc = r0 == r2;
+	r2 = 0;
+	if cc r0 = r2;
+	[fp + S_BSLOT] = r0;
+	r0 = [fp + S_CUR];
+	r1 = [fp + S_NSLOT];
+	r2 = fp;
+	r3 = S_X (x);
+	r2 = r2 + r3;
+	call _bvb_dma_move;
+	r1 = [fp + S_NSLOT];
+	r1 += 1;
+	[fp + S_NSLOT] = r1;
+	rets = [sp++];
+1:	rts;
 
 /* The last pair's S_PREVN candidates (section S_SEC) to cand at S_CPOS, as slot S_NSLOT of
  * the area at S_CUR: re-addressed, with its X_COUNTs set, when that slot of that area is the

@@ -211,8 +211,8 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
   int32_t maxv = 0;
   for (int32_t v : resp) maxv = std::max(maxv, v);
   if (kernel == "harris_nms") {
-    // The map in SDRAM, the scratch (15.5 KB at 320 wide) in L1 bank B: the rows stream in.
-    // At 640 wide it (27 KB) does not fit beside the stack, and the scan reads the map in place.
+    // The map in SDRAM, the scratch (23.0 KB at 320 wide) in L1 bank B: the rows stream in.
+    // At 640 wide it (42 KB) does not fit the bank's 24 KB arena, and the scan reads the map in place.
     CheckCall c = nms_call(w, h, w, std::move(resp), maxv / 100, size);
     if (BVB_HARRIS_NMS_STREAM_SCRATCH_BYTES(w) <= 24 * 1024) c.bufs[3].place = BVB_PLACE_L1B;
     return c;

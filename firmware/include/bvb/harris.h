@@ -63,11 +63,11 @@
  *   Returns the number taken. max_corners >= 0, 0 <= min_distance <= 46340. */
 #define BVB_HARRIS_NMS_CAPACITY(width, height) ((((width) - 1) / 2) * (((height) - 1) / 2))
 #define BVB_HARRIS_NMS_SCRATCH_BYTES(width) (8 * (((width) - 1) / 2) + 8)
-/* bvb_harris_nms_stream_asm's scratch: the waiting list, two DMA jobs, two sections of
- * candidates and six L1 rows in two regions a 4 KB boundary apart (firmware/asm/harris.S):
- * 15.5 KB at 320 wide. */
+/* bvb_harris_nms_stream_asm's scratch: the waiting list, two DMA jobs, two sections of two
+ * pairs' candidates and ten L1 rows in two regions a 4 KB boundary apart
+ * (firmware/asm/harris.S): 23.0 KB at 320 wide. */
 #define BVB_HARRIS_NMS_STREAM_SCRATCH_BYTES(width) \
-  (3 * BVB_HARRIS_NMS_SCRATCH_BYTES(width) + 24 * (width) + 4384)
+  (5 * BVB_HARRIS_NMS_SCRATCH_BYTES(width) + 40 * (width) + 4399)
 
 #ifndef __ASSEMBLER__
 #include <stdint.h>
