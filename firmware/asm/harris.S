@@ -930,7 +930,9 @@ _bvb_harris_response_asm:
  * Cycles (bfbench bench, the response of real frames, threshold 1% of the peak): 65,368 at
  * 160x120, 142,574 at 320x240, 1,041,495 at 640x480 (3.4, 1.9, 3.4 per pixel; 13%, 4% and 13% of
  * the 2x2 blocks reach the full test); the C scan takes 15-17 per pixel (4.8x, 8.2x, 4.9x).
- * Lower bound: 1 issue per pixel (each value through the one 32-bit ALU once). */
+ * Lower bound: 1 issue per pixel (each value through the one 32-bit ALU once). With the map
+ * in SDRAM (the bench) the scan streams it (bvb_harris_nms_stream_asm, at the end of this file):
+ * 692,949 modelled cycles at 320x240 against the bus bound of 614,400. */
 #define C_W      -4
 #define C_PAIRS  -8    /* row pairs left */
 #define C_ROW    -12   /* the upper row of the pair, + 4 (x = 1) */
@@ -1226,21 +1228,55 @@ _bvb_harris_nms_asm:
 	rts;
 	.size _bvb_harris_nms_asm, . - _bvb_harris_nms_asm
 
-/* bvb_harris_nms_stream_asm: bvb_harris_nms with the response map in SDRAM, its rows brought
- * into L1 by memory DMA (bvb/dma.h) while the core scans the pair before; the same arguments,
- * the same candidates. The scratch (BVB_HARRIS_NMS_STREAM_SCRATCH_BYTES) holds the lower
- * row's waiting candidates, the DMA job and a ring of six rows: band k (map rows 2k, 2k+1)
- * goes to slot k % 3 of two regions, the even rows to E, the odd rows to O, with O in other
- * 4 KB sub-banks than E, so that the scan's dual loads of a pair's two rows (an odd upper row,
- * an even lower one) never meet in one sub-bank. Pair j (rows 2j+1, 2j+2) reads bands j and
- * j+1 while band j+2 comes into the slot band j-1 has left: one job of one 2-row transfer a
- * pair (re-addressed, bvb_dma_move), waited for before the next. The rows above an upper row
- * and below a lower row are G = O - E away, the lower row Dp = E(j+1 % 3) - O(j % 3) from the
- * upper: the pair code below is bvb_harris_nms_asm's with those two distances. Candidates go
- * straight to cand. An odd last row is scanned in SDRAM. Anything else (the map in L1, the
- * scratch not in DMA-reachable L1, maps narrower than 8 or lower than 4, a transfer DMA
- * refuses) takes bvb_harris_nms_asm as it is. Called once per frame, the driver runs from
- * SDRAM (.text) through the instruction cache. */
+/* bvb_harris_nms_stream_asm: bvb_harris_nms with the response map in SDRAM (the stand-alone
+ * scan: kernels.def's harris_nms), its rows brought into L1 by memory DMA (bvb/dma.h) ahead of
+ * the scan; the same arguments, the same candidates. The odometry keeps calling
+ * bvb_harris_nms_asm: its response strips are in L1 already.
+ *
+ * The ring. Row pair m (map rows 2m, 2m+1) goes to slot m % 5 of two regions, the even row to
+ * E, the odd row to O, O starting at the first 4 KB boundary after E's end: a pair's upper row
+ * (odd) and lower row (even) are never in one L1 sub-bank, so the scan's dual loads of the two
+ * never collide. Pair j (rows 2j+1, 2j+2) reads row pairs j and j+1; the rows above an upper
+ * row and below a lower row are G = O - E away, the lower row Dp = E(j+1 % 5) - O(j % 5)
+ * from the upper: the pair code (.Ls_do_pair) is bvb_harris_nms_asm's with those two
+ * distances, the above-threshold test inline (a taken jump for the 57% of blocks below the
+ * threshold at the bench's 1% of the peak, instead of two for the 43% above), the next block
+ * reloaded while the winner's row pointers settle (no address-register stall), the rows
+ * above and below the winner (one region) each loaded beside a load of the winner's own row
+ * (no sub-bank collision), and a candidate's key made from the winner's address and a
+ * per-row constant.
+ *
+ * The jobs. Every other pair j, one job (two job areas, built in the one no job runs from,
+ * before the wait) brings row pairs j+3 and j+4 (one 2-row transfer each, E and O rows
+ * G apart) and sends pairs j-2 and j-1's candidates (collected in one of two L1 sections,
+ * the transfer re-addressed and its X_COUNT set: no bvb_dma_prepare per job), after waiting
+ * for the job before (row pairs j+1, j+2): each job has two pairs' scans to run under, which
+ * evens out pairs that outrun the bus (the map's flat parts) and pairs the bus outruns (one
+ * job a pair: 731,486 at 320x240; a third band ahead with one job a pair saved nothing). The
+ * first job brings row pairs 0 to 2 while the core waits; an odd last row is scanned in
+ * SDRAM. Anything else (the map in L1, the scratch or cand where DMA does not reach, maps
+ * narrower than 8 or lower than 4, a transfer DMA refuses) takes bvb_harris_nms_asm as it is.
+ * The driver is once-per-call code and runs from SDRAM (.text) through the instruction cache,
+ * the scan too (its 700 bytes hit in the cache; L1 instruction SRAM is full), padded to 8 KB
+ * so that the code linked after it keeps its cache sets.
+ *
+ * Measured (bfbench bench, the integer texture's response, threshold 1% of the peak; map and
+ * cand in SDRAM, scratch in L1 bank B; modelled cycles, then the simulator's own count):
+ *   160x120     189,656   9.88 per pixel (bound 8: 1.23x)   sim   172,816
+ *   320x240     692,949   9.02           (1.13x)            sim   650,748
+ *   (640x480: the scratch, 42 KB, does not fit L1 bank B's arena: bvb_harris_nms_asm on the
+ *   map in SDRAM, 5,477,343.) Before: bvb_harris_nms_asm on the map in SDRAM through the data
+ *   cache, 400,418 / 1,516,068 (its line fills 800,275 of the 320x240 count). C: 539,076 /
+ *   2,115,060.
+ * Bound: the map's 4 bytes per pixel over the bus at 0.5 byte per core cycle, 8 per pixel
+ * (614,400 at 320x240; the scan's compute bound is 1). Where the rest of 320x240 goes: the
+ * bus also carries the candidates (2,083, 16.7 KB: some 33,000 cycles) and the jobs' start-up
+ * and descriptors (60 jobs of 3 transfers, some 200 cycles each); the first three row pairs (15,400 cycles) come in
+ * before anything is computed; the scan itself is about as long as the bus's time (the block
+ * loop 567,600 cycles: 5 issues a block, 8 more for the below-threshold jump, some 40 for an
+ * above-threshold block's winner and its 8 neighbours, 8,230 of 18,921), so that the pairs
+ * the bus waits for are not all hidden; the core waits 35,700 cycles in bvb_dma_wait in all.
+ * Scratch: BVB_HARRIS_NMS_STREAM_SCRATCH_BYTES, 23.0 KB at 320 wide. */
 #define S_RESP   -32   /* resp */
 #define S_H      -36   /* height */
 #define S_RB     -40   /* bytes per row, 4 width */
