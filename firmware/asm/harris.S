@@ -1271,8 +1271,9 @@ _bvb_harris_nms_asm:
  * Bound: the map's 4 bytes per pixel over the bus at 0.5 byte per core cycle, 8 per pixel
  * (614,400 at 320x240; the scan's compute bound is 1). Where the rest of 320x240 goes: the
  * bus also carries the candidates (2,083, 16.7 KB: some 33,000 cycles) and the jobs' start-up
- * and descriptors (60 jobs of 3 transfers, some 200 cycles each); the first three row pairs (15,400 cycles) come in
- * before anything is computed; the scan itself is about as long as the bus's time (the block
+ * and descriptors (60 jobs of 3 transfers, some 200 cycles each); the first three row pairs
+ * (15,400 cycles) come in before anything is computed; the scan itself is about as long as
+ * the bus's time (the block
  * loop 567,600 cycles: 5 issues a block, 8 more for the below-threshold jump, some 40 for an
  * above-threshold block's winner and its 8 neighbours, 8,230 of 18,921), so that the pairs
  * the bus waits for are not all hidden; the core waits 35,700 cycles in bvb_dma_wait in all.
