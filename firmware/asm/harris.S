@@ -284,8 +284,8 @@ _bvb_harris_response_asm:
 	r0 = [i0++];
 	r1 = pack (r0.l, r2.h);
 	lsetup (.Lw_s, .Lw_e) lc0 = p3;
-.Lw_s:	r4 = r1 +|+ r0 || r2 = [i0++] || [i1++] = r5;
-	r3 = pack (r2.l, r0.h);
+.Lw_s:	r4 = r1 +|+ r0 || r2 = [i0++];
+	r3 = pack (r2.l, r0.h) || [i1++] = r5;  /* not beside the load: C and W share sub-banks */
 	r4 = r4 +|+ r3 || r0 = [i0++];
 	r1 = pack (r0.l, r2.h) || [i1++] = r4;
 	r5 = r3 +|+ r2;
