@@ -817,11 +817,27 @@ _bvb_harris_response_asm:
 	/* gy = dn - up, pixels 0 .. 8 n8 - 1 */
 	i0 = r4;
 	i1 = r3;
+	r0 = r4 | r3;
+	r7 = 3;
+	r0 = r0 & r7;
+	cc = r0 == 0;           /* both rows word-aligned (the DMA path's ring rows) */
 	r0 = p1;
 	r0 += -4;               /* the pipelined first store is garbage: into the pad */
 	i2 = r0;
 	disalgnexcpt || r0 = [i0++] || r2 = [i1++];
 	disalgnexcpt || r1 = [i0++] || r3 = [i1++];
+	if !cc jump .Lgy_u;
+	/* aligned rows: the two rows' loads in different issues, since the ring's rows y and
+	 * y+2 share a sub-bank (a dual load of them costs a cycle) */
+	lsetup (.Lgya_s, .Lgya_e) lc0 = p3;
+.Lgya_s: (r5, r4) = byteop16m (r1:0, r3:2) || r0 = [i0++];
+	r4 = r4 << 5 (v) || [i2++m2] = r7 || r2 = [i1++];
+	r5 = r5 << 5 (v) || [i2++m2] = r4;
+	(r7, r6) = byteop16m (r1:0, r3:2) (r) || r1 = [i0++];
+	r6 = r6 << 5 (v) || [i2++m2] = r5 || r3 = [i1++];
+.Lgya_e: r7 = r7 << 5 (v) || [i2++m2] = r6;
+	jump .Lgy_j;
+.Lgy_u:
 	lsetup (.Lgy_s, .Lgy_e) lc0 = p3;
 .Lgy_s:	(r5, r4) = byteop16m (r1:0, r3:2) || r0 = [i0++] || r2 = [i1++];
 	r4 = r4 << 5 (v) || [i2++m2] = r7;
@@ -829,6 +845,7 @@ _bvb_harris_response_asm:
 	(r7, r6) = byteop16m (r1:0, r3:2) (r) || r1 = [i0++] || r3 = [i1++];
 	r6 = r6 << 5 (v) || [i2++m2] = r5;
 .Lgy_e:	r7 = r7 << 5 (v) || [i2++m2] = r6;
+.Lgy_j:
 	[i2++m2] = r7;
 	/* gx = mid[x+1] - mid[x-1] */
 	r5 = p0;
