@@ -43,22 +43,23 @@
  *
  * Measured (bfbench bench, frames in SDRAM, scratch in L1B; modelled cycles under --timing
  * bf537, then the simulator's own count, --timing none):
- *   160x120     353,881  18.43 per pixel (bound 11.5: 1.60x)   sim   309,415
- *   320x240   1,189,203  15.48           (1.35x)                sim 1,117,775
- *   640x480   4,419,628  14.39           (1.25x)                sim 4,232,095
- *   (before the window sums' W store moved off the issue that loads plane C: 365,829 /
- *   1,244,191 / 4,429,624; dst in SDRAM: the test of where dst is costs some 8 cycles a row.)
+ *   160x120     350,484  18.25 per pixel (bound 11.5: 1.59x)   sim   310,595
+ *   320x240   1,172,856  15.27           (1.33x)                sim 1,120,155
+ *   640x480   4,375,324  14.24           (1.24x)                sim 4,236,875
+ *   (before the window sums' W store moved off the issue that loads plane C and the gy loop's
+ *   two rows off one issue: 365,829 / 1,244,191 / 4,429,624; dst in SDRAM: the test of where
+ *   dst is costs some 8 cycles a row.)
  *   (C -O2 from SDRAM: 3,008,346 / 12,238,913 / 49,397,617.) Before the DMA path (frames and
  *   scratch read and written in place in SDRAM through the data cache): 793,108 modelled at
  *   160x120 (41 per pixel; sim 274,911), the response's 4 bytes per pixel paying a line fill
  *   and a write-back per 8 pixels.
- *   Where the 320x240 cycles go over the bound's 883,200 (1,091,246 issues, bfbench profile):
+ *   Where the 320x240 cycles go over the bound's 883,200 (1,092,689 issues, bfbench profile):
  *   the PACKs of the window sums (1.5 per pixel, 115,000) and the per-row set-up of the four
- *   passes; the DMA bookkeeping (about 290 cycles a row, 68,000); then under the model L1
- *   sub-bank collisions, 40,912: the gradient loops load two rows of one sub-bank (the ring's
- *   rows y and y+2 for gy, row y at -1 and +1 for gx: 37,128; not yet placed apart), the
- *   column sums load slot 0 in the issue that stores cxx or cxy (2,360); multi-cycle branches
- *   and calls 37,057, MMR accesses 16,456; the fill (job A, 4 rows) and the last
+ *   passes; the DMA bookkeeping (about 290 cycles a row, 68,000); then under the model
+ *   multi-cycle branches and calls 38,045, L1 sub-bank collisions 22,348 (the gx loop loads
+ *   one row at -1 and +1, unaligned, so by the BYTEOP's own issue: 18,564; the column sums
+ *   load slot 0 in the issue that stores cxx or cxy), MMR accesses 16,480; the fill (job A,
+ *   4 rows) and the last
  *   row's transfer, which no compute covers. At 640x480 the per-row costs weigh a quarter.
  * Working set: 24 * NG + 144 bytes of working rows, then the DMA region (job, four image rows,
  * two response rows): BVB_HARRIS_SCRATCH_BYTES, 6.4 KB at 160, 23.7 KB at 640. */
