@@ -59,8 +59,8 @@
  *   multi-cycle branches and calls 38,045, L1 sub-bank collisions 22,348 (the gx loop loads
  *   one row at -1 and +1, unaligned, so by the BYTEOP's own issue: 18,564; the column sums
  *   load slot 0 in the issue that stores cxx or cxy), MMR accesses 16,480; the fill (job A,
- *   4 rows) and the last
- *   row's transfer, which no compute covers. At 640x480 the per-row costs weigh a quarter.
+ *   4 rows) and the last row's transfer, which no compute covers. At 640x480 the per-row
+ *   costs weigh a quarter.
  * Working set: 24 * NG + 144 bytes of working rows, then the DMA region (job, four image rows,
  * two response rows): BVB_HARRIS_SCRATCH_BYTES, 6.4 KB at 160, 23.7 KB at 640. */
 #include "bvb/dma.h"
