@@ -1274,6 +1274,8 @@ _bvb_harris_nms_asm:
  * first job brings row pairs 0 to 2 while the core waits; an odd last row is scanned in
  * SDRAM. Anything else (the map in L1, the scratch or cand where DMA does not reach, maps
  * narrower than 8 or lower than 4, a transfer DMA refuses) takes bvb_harris_nms_asm as it is.
+ * Coherence as bvb/dma.h: on the chip with the data cache on, cand's lines would be
+ * invalidated before the candidates' transfers write it.
  * The driver is once-per-call code and runs from SDRAM (.text) through the instruction cache,
  * the scan too (its 700 bytes hit in the cache; L1 instruction SRAM is full), padded to 8 KB
  * so that the code linked after it keeps its cache sets.
