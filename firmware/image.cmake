@@ -12,7 +12,7 @@ add_compile_options(-O2 -Wall -Wextra)
 add_compile_options($<$<COMPILE_LANGUAGE:ASM>:-g>)
 
 set(BVB_RUNTIME_SOURCES
-    runtime/crt0.S runtime/call.S runtime/dma.S runtime/main.c runtime/stream.c
+    runtime/crt0.S runtime/call.S runtime/dma.S runtime/udiv.S runtime/main.c runtime/stream.c
     runtime/string.c)
 list(TRANSFORM BVB_RUNTIME_SOURCES PREPEND ${BVB_FIRMWARE_ROOT}/)
 add_library(bvb_runtime OBJECT ${BVB_RUNTIME_SOURCES})

@@ -37,8 +37,10 @@ FixedFlow run_fixed(const bvb::Image &a, const bvb::Image &b, int32_t alpha2, in
   f.h = a.height;
   f.uv.assign(size_t(2) * f.w * f.h, int16_t(0x5555));
   std::vector<uint32_t> scratch((BVB_HS_SCRATCH_BYTES(f.w, f.h) + 3) / 4);
+  std::vector<uint32_t> flow_scratch((BVB_HS_FLOW_SCRATCH_BYTES(f.w) + 3) / 4);
+  std::vector<uint32_t> coef_scratch((BVB_HS_ITER_COEF_SCRATCH_BYTES(f.w) + 3) / 4);
   bvb_hornschunck_c(a.data.data(), b.data.data(), f.w, f.h, f.w, alpha2, iterations, f.uv.data(),
-                    4 * f.w, scratch.data());
+                    4 * f.w, scratch.data(), flow_scratch.data(), coef_scratch.data());
   return f;
 }
 
@@ -182,7 +184,7 @@ TEST(HornSchunckIterate, AverageWeightsAndTiesToEven) {
         }
       }
     }
-    bvb_hs_iterate_c(coef.data(), in, 12, out, 12, 3, 3);
+    bvb_hs_iterate_c(coef.data(), in, 12, out, 12, 3, 3, nullptr, nullptr);
     for (int c = 0; c < 2; ++c) {
       auto at = [&](int x, int y) { return int64_t(in[2 * (y * 3 + x) + c]); };
       const int64_t diag = at(0, 0) + at(2, 0) + at(0, 2) + at(2, 2);
@@ -271,8 +273,10 @@ TEST(HornSchunckFlow, StridesAndSmallOddSizes) {
       }
     std::vector<int16_t> uv(size_t(ustride / 2) * h, int16_t(0x1234));
     std::vector<uint32_t> scratch((BVB_HS_SCRATCH_BYTES(w, h) + 3) / 4);
+    std::vector<uint32_t> flow_scratch((BVB_HS_FLOW_SCRATCH_BYTES(w) + 3) / 4);
+    std::vector<uint32_t> coef_scratch((BVB_HS_ITER_COEF_SCRATCH_BYTES(w) + 3) / 4);
     bvb_hornschunck_c(fa.data(), fb.data(), w, h, fstride, 4096, 7, uv.data(), ustride,
-                      scratch.data());
+                      scratch.data(), flow_scratch.data(), coef_scratch.data());
     for (int y = 0; y < h; ++y)
       for (int i = 0; i < ustride / 2; ++i) {
         const int16_t got = uv[size_t(y) * (ustride / 2) + i];
@@ -295,7 +299,7 @@ TEST(HornSchunckFlow, ConvenienceFunctionEqualsPrepareAndIterations) {
   for (int n = 0; n <= 5; ++n) {
     const FixedFlow f = run_fixed(a, b, kAlpha2, n);
     EXPECT_EQ(f.uv, cur) << n << " iterations";
-    bvb_hs_iterate_c(coef.data(), cur.data(), 4 * w, next.data(), 4 * w, w, h);
+    bvb_hs_iterate_c(coef.data(), cur.data(), 4 * w, next.data(), 4 * w, w, h, nullptr, nullptr);
     cur.swap(next);
   }
 }
@@ -320,7 +324,7 @@ TEST(HornSchunckIterate, IterateNEqualsPingPongedIterations) {
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < 2 * w; ++x) cur[size_t(y) * 2 * w + x] = in[size_t(y) * (is / 2) + x];
       for (int k = 0; k < n; ++k) {
-        bvb_hs_iterate_c(coef.data(), cur.data(), 4 * w, next.data(), 4 * w, w, h);
+        bvb_hs_iterate_c(coef.data(), cur.data(), 4 * w, next.data(), 4 * w, w, h, nullptr, nullptr);
         cur.swap(next);
       }
       std::vector<int16_t> out(size_t(os / 2) * h, int16_t(0x1234));

@@ -25,12 +25,20 @@
  *   reference built with bfin-elf-gcc -O2). Modelled BF537 cycles (--timing bf537), frames,
  *   coefficients and flow in SDRAM through the data cache, as the bench places them:
  *                    160x120               320x240
- *   hs_iterate     1,195,196  (62.25)    4,669,482  (60.80)    bound 10 (bus 28)
+ *   hs_iterate       616,456  (32.11)    2,307,931  (30.05)    bound 28 (the bus; compute 10)
  *   hs_prepare       410,030  (21.36)    1,504,833  (19.59)    bound 17 (bus 16)
- *   hornschunck   13,226,105 (688.9)    52,997,199 (690.1)     bound 118, N = 10
- *   (hs_iterate and hornschunck: 2,250 to 2,850 cycles an iteration more than before their rows
- *   became calls of the shared row routine, ROWS below: the call and return, 10 cycles a row,
- *   and at 160 wide the entry's two jumps; the simulator's counts below are those of before.)
+ *   hornschunck    2,609,790 (135.9)     9,710,072 (126.4)     bound 117, N = 10
+ *   hs_iterate with its two L1 scratches is bvb_hs_iterate_n_asm's one level (bus-bound: 1.07x
+ *   at 320x240, 1.15x at 160, the per-row cost over half the pixels); before, through the data
+ *   cache, 1,195,196 (62.25) and 4,669,482 (60.80). (Its direct path: 2,250 to 2,850 cycles an
+ *   iteration more than before its rows became calls of the shared row routine, ROWS below: the
+ *   call and return, 10 cycles a row, and at 160 wide the entry's two jumps; the simulator's
+ *   counts below are those of before.) hornschunck is
+ *   prepare streamed through its flow-row scratch (L1 bank B) and one bvb_hs_iterate_n_asm
+ *   from a zero row read with stride 0: 1.08x its bound of 17 + 10 N at 320x240, 1.16x at 160
+ *   (hs_iterate_n's per-row cost over half the pixels, prepare's 21.4); before, the iterations
+ *   were N bvb_hs_iterate_asm calls through the data cache and a zeroed frame of start flow:
+ *   13,226,105 and 52,997,199.
  *   hs_prepare streams its rows through L1 (the scratch in L1 bank B; STREAMED PATH below):
  *   640x480 5,804,772 (18.90). Its simulator counts are 370,510 and 1,432,760 against the
  *   343,133 and 1,339,013 of the same code on data in L1 (below): the 27k / 94k between them
@@ -97,11 +105,11 @@
  * MEMORY. The kernels work wherever the caller puts the buffers. At the robot's sizes frames,
  *   coefficients and flow live in SDRAM (working set 14 bytes per pixel: 263 KB at 160x120, past
  *   the 64 KB of L1 data); the bench places them there. The simulator's own counts are those of
- *   data in L1; the modelled ones of bvb_hs_iterate_asm and bvb_hornschunck_asm pay SDRAM
- *   through the cache (one iteration alone is bus-bound: 28 cycles a pixel for its 14 bytes);
- *   bvb_hs_iterate_n_asm fuses the iterations over L1 rings (FUSED ITERATIONS above); the
- *   hornschunck driver would need an L1 scratch beside its frame-sized one to call it. The count
- *   table is in L1 data bank A; the rsqrt table is the C reference's (.rodata).
+ *   data in L1; the modelled ones of bvb_hs_iterate_asm pay SDRAM through the cache (one
+ *   iteration alone is bus-bound: 28 cycles a pixel for its 14 bytes); bvb_hs_iterate_n_asm
+ *   fuses the iterations over L1 rings (FUSED ITERATIONS above), and bvb_hornschunck_asm calls
+ *   it with the two L1 scratches it is given. The count table is in L1 data bank A; the rsqrt
+ *   table is the C reference's (.rodata).
  *
  * ROWS. One routine makes an output row (HS_PIX0, then the loop of HS_PIX, then the last pixel)
  *   for both iteration kernels: L1 instruction memory has no room for a copy per kernel.
@@ -113,7 +121,9 @@
  */
 
 /* ---------------------------------------------------------------------------------------------
- * bvb_hs_iterate_asm(coef, uv_in, in_stride, uv_out, out_stride, width, height)
+ * bvb_hs_iterate_asm(coef, uv_in, in_stride, uv_out, out_stride, width, height, flow_scratch,
+ *                    coef_scratch): with the scratches, bvb_hs_iterate_n_asm's one iteration
+ * (streamed); without, the direct path below on the buffers where they are.
  * --------------------------------------------------------------------------------------------- */
 
 /* One interior pixel. Column sums cl = ra, c0 = rb (carried), cr = rc (computed here); on entry
@@ -236,6 +246,32 @@
 	.global _bvb_hs_iterate_asm
 	.type _bvb_hs_iterate_asm, STT_FUNC
 _bvb_hs_iterate_asm:
+	/* With the two scratches (arguments 8 and 9), one iteration of bvb_hs_iterate_n_asm: its
+	 * rows by DMA through them where it reaches. Arguments 4-9 at SP + 12..32 on entry. */
+	r3 = [sp + 28];
+	cc = r3 == 0;
+	if cc jump .Lit_direct;
+	[--sp] = rets;
+	sp += -40;
+	r3 = [sp + 56];                  /* uv_out */
+	[sp + 12] = r3;
+	r3 = [sp + 60];                  /* out_stride */
+	[sp + 16] = r3;
+	r3 = [sp + 64];                  /* width */
+	[sp + 20] = r3;
+	r3 = [sp + 68];                  /* height */
+	[sp + 24] = r3;
+	r3 = 1;                          /* one iteration */
+	[sp + 28] = r3;
+	r3 = [sp + 72];                  /* flow_scratch */
+	[sp + 32] = r3;
+	r3 = [sp + 76];                  /* coef_scratch */
+	[sp + 36] = r3;
+	call _bvb_hs_iterate_n_asm;
+	sp += 40;
+	rets = [sp++];
+	rts;
+.Lit_direct:
 	[--sp] = (r7:4, p5:3);
 	[--sp] = fp;
 	[--sp] = rets;                  /* the rows are calls */
@@ -487,7 +523,11 @@ _bvb_hs_iterate_n_asm:
 	[fp + N_F4] = r0;
 	[fp + N_CF] = r4;
 	/* the three transfers: their shapes, and the addresses of step -2 */
+	/* (a one-row transfer never uses its source stride; bvb_dma_prepare refuses one below the
+	 * width, so in_stride 0, one row for every row, is given as the width) */
 	r0 = [fp + N_SS];
+	r1 = [fp + N_W4];
+	r0 = max (r0, r1);
 	[fp + N_X0 + DMAX_SS] = r0;
 	r0 = [fp + N_W4];
 	[fp + N_X0 + DMAX_DS] = r0;
@@ -1531,75 +1571,106 @@ _bvb_hs_prepare_asm:
 
 /* ---------------------------------------------------------------------------------------------
  * bvb_hornschunck_asm(i1, i2, width, height, stride, alpha2_q4, iterations, uv_out, out_stride,
- *                     scratch): prepare, then the iterations ping-ponging between the scratch
- * flow buffer and uv_out, starting in the one that makes the last iteration write uv_out.
+ *                     scratch, flow_scratch, coef_scratch): prepare (streamed through
+ * flow_scratch), then all the iterations in one bvb_hs_iterate_n_asm from zero flow: one zero
+ * row after the coefficients in scratch, read with stride 0 as every row of the start field.
+ * Once a call, so it runs from SDRAM (cached): L1 instruction memory is for the loops.
  * --------------------------------------------------------------------------------------------- */
-#define HS_OUT_STRIDE -4
-#define HS_CUR        -8
-#define HS_CUR_STRIDE -12
-#define HS_NEXT       -16
-#define HS_NEXT_STRIDE -20
-#define HS_I1         -24
-#define HS_I2         -28
-#define HS_DRV_FRAME  60             /* locals at FP-28..-1, outgoing arguments at SP + 12..31 */
-
-	.section .l1.text, "ax"
+	.text
 	.align 4
 	.global _bvb_hornschunck_asm
 	.type _bvb_hornschunck_asm, STT_FUNC
 _bvb_hornschunck_asm:
 	[--sp] = (r7:4, p5:3);
-	link HS_DRV_FRAME;
-	/* Arguments 4-10 at FP + 48. */
-	[fp + HS_I1] = r0;
-	[fp + HS_I2] = r1;
-	r4 = r2;                         /* width */
-	r5 = [fp + 48];                  /* height */
-	r6 = [fp + 60];                  /* iterations */
-	p5 = [fp + 64];                  /* uv_out */
-	r0 = [fp + 68];
-	[fp + HS_OUT_STRIDE] = r0;
-	p3 = [fp + 72];                  /* coefficients at the start of scratch */
-	r7 = r4 << 2;                    /* the scratch flow buffer's stride */
-	/* tmp = scratch + BVB_HS_COEF_BYTES(width, height) */
-	r0 = r4 << 1;
-	r0 = r0 + r7;
+	link 40;                         /* the outgoing arguments 4-10 at SP + 12..39 */
+	/* Arguments 4-12 at FP + 48: height, stride, alpha2_q4, iterations, uv_out, out_stride,
+	 * scratch, flow_scratch, coef_scratch. */
+	r4 = r0;                         /* i1 */
+	r5 = r1;                         /* i2 */
+	r6 = r2;                         /* width */
+	r7 = [fp + 60];                  /* iterations */
+	cc = r7 <= 0;
+	if cc jump .Lhs_zero_out;
+	/* the zero row: scratch + BVB_HS_COEF_BYTES(width, height), width + 1 words */
+	r0 = r6 << 1;
+	r0 = r0 + r6;
 	r1 = 1;
-	r1 = r1 & r4;
-	r1 = r1 << 1;
+	r1 = r1 & r6;
 	r0 = r0 + r1;
-	r0 *= r5;
-	r1 = p3;
+	r0 <<= 1;                        /* 2 * BVB_HS_COEF_PITCH(width) */
+	r1 = [fp + 48];
+	r0 *= r1;
+	r1 = [fp + 72];
 	r0 = r0 + r1;
-	p4 = r0;
-	/* cur = iterations odd ? tmp : uv_out; next is the other one. */
-	r0 = p4;
-	r1 = r7;
-	r2 = p5;
-	r3 = [fp + HS_OUT_STRIDE];
-	cc = bittst (r6, 0);
-	if !cc r0 = r2;
-	if !cc r1 = r3;
-	[fp + HS_CUR] = r0;
-	[fp + HS_CUR_STRIDE] = r1;
-	r2 = p4;
-	r3 = r7;
-	p0 = p5;
-	if cc r2 = p0;
-	r0 = [fp + HS_OUT_STRIDE];
-	if cc r3 = r0;
-	[fp + HS_NEXT] = r2;
-	[fp + HS_NEXT_STRIDE] = r3;
-	/* Zero flow to start from: width words per row of cur (one I register walks the rows: no
-	 * pointer is moved from a data register per row). */
-	r0 = [fp + HS_CUR];
-	i0 = r0;
-	r1 = [fp + HS_CUR_STRIDE];
-	r1 = r1 - r7;
-	m0 = r1;                         /* stride - 4 width */
+	p3 = r0;
+	p0 = r0;
+	p1 = r6;
 	r2 = 0;
-	p1 = r4;
-	lc1 = r5;
+	[p0++] = r2;
+	lsetup (.Lhs_z1, .Lhs_z1) lc0 = p1;
+.Lhs_z1:
+	[p0++] = r2;
+	/* On the chip the row must leave the write-back data cache before the DMA reads it
+	 * (bvb/dma.h: coherence): FLUSH its lines, 4 width + 4 bytes from a line start. */
+	r0 = p3;
+	r1 = 31;
+	r1 = r0 & r1;
+	r0 = r0 - r1;
+	p0 = r0;
+	r0 = r6 << 2;
+	r0 = r0 + r1;
+	r0 += 35;
+	r0 >>= 5;
+	p1 = r0;
+	lsetup (.Lhs_fl, .Lhs_fl) lc0 = p1;
+.Lhs_fl:
+	flush [p0++];
+	/* prepare(i1, i2, width, height, stride, alpha2_q4, coef = scratch, flow_scratch) */
+	r0 = [fp + 48];
+	[sp + 12] = r0;
+	r0 = [fp + 52];
+	[sp + 16] = r0;
+	r0 = [fp + 56];
+	[sp + 20] = r0;
+	r0 = [fp + 72];
+	[sp + 24] = r0;
+	r0 = [fp + 76];
+	[sp + 28] = r0;
+	r0 = r4;
+	r1 = r5;
+	r2 = r6;
+	call _bvb_hs_prepare_asm;
+	/* iterate_n(coef, zero row, 0, uv_out, out_stride, width, height, iterations, flow_scratch,
+	 * coef_scratch) */
+	r0 = [fp + 64];
+	[sp + 12] = r0;
+	r0 = [fp + 68];
+	[sp + 16] = r0;
+	[sp + 20] = r6;
+	r0 = [fp + 48];
+	[sp + 24] = r0;
+	[sp + 28] = r7;
+	r0 = [fp + 76];
+	[sp + 32] = r0;
+	r0 = [fp + 80];
+	[sp + 36] = r0;
+	r0 = [fp + 72];
+	r1 = p3;
+	r2 = 0;
+	call _bvb_hs_iterate_n_asm;
+	jump .Lhs_done;
+.Lhs_zero_out:
+	/* no iterations: zero flow in uv_out, width words a row */
+	p0 = [fp + 64];
+	r0 = [fp + 68];
+	r1 = r6 << 2;
+	r0 = r0 - r1;
+	m0 = r0;                         /* out_stride - 4 width */
+	i0 = p0;
+	r2 = 0;
+	p1 = r6;
+	r0 = [fp + 48];
+	lc1 = r0;
 	lsetup (.Lhs_zrow, .Lhs_zrow_end) lc1;
 .Lhs_zrow:
 	lsetup (.Lhs_zpix, .Lhs_zpix) lc0 = p1;
@@ -1607,44 +1678,6 @@ _bvb_hornschunck_asm:
 	[i0++] = r2;
 .Lhs_zrow_end:
 	i0 += m0;
-	/* prepare(i1, i2, width, height, stride, alpha2_q4, coef, no stream scratch) */
-	r0 = 0;
-	[sp + 28] = r0;
-	r0 = [fp + 52];
-	[sp + 16] = r0;
-	r0 = [fp + 56];
-	[sp + 20] = r0;
-	[sp + 12] = r5;
-	[sp + 24] = p3;
-	r0 = [fp + HS_I1];
-	r1 = [fp + HS_I2];
-	r2 = r4;
-	call _bvb_hs_prepare_asm;
-	cc = r6 <= 0;
-	if cc jump .Lhs_done;
-.Lhs_iter:
-	/* iterate(coef, cur, cur_stride, next, next_stride, width, height), then swap. */
-	r0 = [fp + HS_NEXT];
-	[sp + 12] = r0;
-	r0 = [fp + HS_NEXT_STRIDE];
-	[sp + 16] = r0;
-	[sp + 20] = r4;
-	[sp + 24] = r5;
-	r0 = p3;
-	r1 = [fp + HS_CUR];
-	r2 = [fp + HS_CUR_STRIDE];
-	call _bvb_hs_iterate_asm;
-	r0 = [fp + HS_CUR];
-	r1 = [fp + HS_CUR_STRIDE];
-	r2 = [fp + HS_NEXT];
-	r3 = [fp + HS_NEXT_STRIDE];
-	[fp + HS_CUR] = r2;
-	[fp + HS_CUR_STRIDE] = r3;
-	[fp + HS_NEXT] = r0;
-	[fp + HS_NEXT_STRIDE] = r1;
-	r6 += -1;
-	cc = r6 == 0;
-	if !cc jump .Lhs_iter (bp);
 .Lhs_done:
 	unlink;
 	(r7:4, p5:3) = [sp++];

@@ -189,8 +189,11 @@ static void iterate_row(const int16_t *top, const int16_t *mid, const int16_t *b
 }
 
 void bvb_hs_iterate_c(const int16_t *coef, const int16_t *uv_in, int32_t in_stride,
-                      int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height) {
+                      int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height,
+                      void *flow_scratch, void *coef_scratch) {
   const int32_t pitch = BVB_HS_COEF_PITCH(width);
+  (void)flow_scratch; /* the assembly's streamed path */
+  (void)coef_scratch;
   for (int32_t y = 0; y < height; ++y) {
     const int32_t ym = y > 0 ? y - 1 : 0, yp = y + 1 < height ? y + 1 : height - 1;
     const int16_t *top = (const int16_t *)((const uint8_t *)uv_in + ym * in_stride);
@@ -215,7 +218,7 @@ void bvb_hs_iterate_n_c(const int16_t *coef, const int16_t *uv_in, int32_t in_st
   saved[0] = (int16_t *)flow_scratch;
   saved[1] = saved[0] + 2 * width;
   if (iterations < 1) return;
-  bvb_hs_iterate_c(coef, uv_in, in_stride, uv_out, out_stride, width, height);
+  bvb_hs_iterate_c(coef, uv_in, in_stride, uv_out, out_stride, width, height, 0, 0);
   for (int32_t n = 1; n < iterations; ++n) {
     int16_t *above = saved[0], *here = saved[1];
     for (int32_t x = 0; x < 2 * width; ++x) here[x] = uv_out[x];
@@ -235,25 +238,22 @@ void bvb_hs_iterate_n_c(const int16_t *coef, const int16_t *uv_in, int32_t in_st
   }
 }
 
+/* Prepare, then the iterations fused by bvb_hs_iterate_n_c from zero flow: one zero row in
+ * scratch after the coefficients, read with stride 0 as every row of the start field. */
 void bvb_hornschunck_c(const uint8_t *i1, const uint8_t *i2, int32_t width, int32_t height,
                        int32_t stride, int32_t alpha2_q4, int32_t iterations, int16_t *uv_out,
-                       int32_t out_stride, void *scratch) {
+                       int32_t out_stride, void *scratch, void *flow_scratch, void *coef_scratch) {
   int16_t *coef = (int16_t *)scratch;
-  int16_t *tmp = (int16_t *)((uint8_t *)scratch + BVB_HS_COEF_BYTES(width, height));
-  const int32_t tmp_stride = 4 * width;
-  /* Start in the buffer that makes the last iteration write uv_out. */
-  int16_t *cur = (iterations & 1) ? tmp : uv_out;
-  int32_t cur_stride = (iterations & 1) ? tmp_stride : out_stride;
-  for (int32_t y = 0; y < height; ++y) {
-    int16_t *row = (int16_t *)((uint8_t *)cur + y * cur_stride);
-    for (int32_t x = 0; x < 2 * width; ++x) row[x] = 0;
+  int16_t *zero = (int16_t *)((uint8_t *)scratch + BVB_HS_COEF_BYTES(width, height));
+  if (iterations < 1) {
+    for (int32_t y = 0; y < height; ++y) {
+      int16_t *row = (int16_t *)((uint8_t *)uv_out + y * out_stride);
+      for (int32_t x = 0; x < 2 * width; ++x) row[x] = 0;
+    }
+    return;
   }
-  bvb_hs_prepare_c(i1, i2, width, height, stride, alpha2_q4, coef, 0);
-  for (int32_t n = 0; n < iterations; ++n) {
-    int16_t *next = cur == tmp ? uv_out : tmp;
-    const int32_t next_stride = cur == tmp ? out_stride : tmp_stride;
-    bvb_hs_iterate_c(coef, cur, cur_stride, next, next_stride, width, height);
-    cur = next;
-    cur_stride = next_stride;
-  }
+  for (int32_t x = 0; x < 2 * width + 2; ++x) zero[x] = 0;
+  bvb_hs_prepare_c(i1, i2, width, height, stride, alpha2_q4, coef, flow_scratch);
+  bvb_hs_iterate_n_c(coef, zero, 0, uv_out, out_stride, width, height, iterations, flow_scratch,
+                     coef_scratch);
 }

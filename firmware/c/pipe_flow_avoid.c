@@ -148,7 +148,7 @@ int32_t bvb_pipe_flow_avoid_run(const struct bvb_flow_avoid_kernels *k, const ui
     for (int32_t i = 0; i < ws * rs; ++i) z[i] = 0;
     for (int32_t n = 0; n < p->iterations; ++n) {
       int16_t *next = uv == flow_a ? flow_b : flow_a;
-      k->hs_iterate(coef, uv, 4 * ws, next, 4 * ws, ws, rs);
+      k->hs_iterate(coef, uv, 4 * ws, next, 4 * ws, ws, rs, 0, 0); /* its buffers are in L1 */
       uv = next;
     }
     if (++stage >= limit) goto stopped;

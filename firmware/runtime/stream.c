@@ -83,7 +83,7 @@ static L1TEXT void run(struct bvb_stream *st, int32_t j, int32_t slots) {
   }
 }
 
-L1TEXT int32_t bvb_stream_open(struct bvb_stream *st) {
+static L1TEXT int32_t stream_open(struct bvb_stream *st) {
   const int32_t nin = st->src_bytes[1] > 0 ? 2 : 1, out = st->dst_bytes > 0;
   const int32_t rb = st->src_bytes[0] + (nin > 1 ? st->src_bytes[1] : 0) + (out ? st->dst_bytes : 0);
   if (st->src_bytes[0] <= 0 || st->rows <= 0 || in_sdram(st) ||
@@ -142,6 +142,16 @@ L1TEXT int32_t bvb_stream_open(struct bvb_stream *st) {
   st->fly_row = 0;
   st->fly_n = n0;
   return 0;
+}
+
+/* GCC's code leaves a hardware loop counting when it leaves it early (a refusal inside the
+ * plane loops can leave LC1 armed), its convention; an assembly caller, which may
+ * keep its own loops across the call, should find no stale count whose loop end could fire,
+ * and the checked call reports a loop left counting. Both counters are cleared on return. */
+L1TEXT int32_t bvb_stream_open(struct bvb_stream *st) {
+  const int32_t r = stream_open(st);
+  __asm__ volatile("LC0 = %0;\n\tLC1 = %0;" : : "d"(0));
+  return r;
 }
 
 L1TEXT int32_t bvb_stream_next(struct bvb_stream *st) {

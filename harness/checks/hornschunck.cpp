@@ -250,8 +250,12 @@ CheckCall prepare_call(int w, int h, int stride, const FramePair &p, int32_t alp
   return c;
 }
 
+constexpr int kIterFlowScratch = 3, kIterCoefScratch = 4;
+
+// hs_iterate: with `scratches`, buffers 3 and 4 are the streamed path's (as hs_iterate_n's);
+// without, both arguments are NULL.
 CheckCall iterate_call(int w, int h, const std::vector<int16_t> &coef, const std::vector<int16_t> &uv,
-                       int in_stride, int out_stride, const std::string &name) {
+                       int in_stride, int out_stride, bool scratches, const std::string &name) {
   CheckCall c;
   c.kernel = "hs_iterate";
   c.case_name = name;
@@ -262,13 +266,24 @@ CheckCall iterate_call(int w, int h, const std::vector<int16_t> &coef, const std
   int iu = c.in("uv_in", as_bytes(uv), {2, true, 2 * w, h, in_stride / 2});
   int io = c.out("uv_out", size_t(out_stride) * (h - 1) + 4 * size_t(w), {2, true, 2 * w, h, out_stride / 2, 2});
   c.buf(ic).buf(iu).word(in_stride).buf(io).word(out_stride).word(w).word(h);
-  c.host = [=](HostBuffers &m) {
-    bvb_hs_iterate_c(m.s16(ic), m.s16(iu), in_stride, m.s16(io), out_stride, w, h);
-  };
+  if (scratches) {
+    int fs = c.scratch("flow_scratch", BVB_HS_ITER_FLOW_SCRATCH_BYTES(w));
+    int cs = c.scratch("coef_scratch", BVB_HS_ITER_COEF_SCRATCH_BYTES(w));
+    c.buf(fs).buf(cs);
+    c.host = [=](HostBuffers &m) {
+      bvb_hs_iterate_c(m.s16(ic), m.s16(iu), in_stride, m.s16(io), out_stride, w, h, m.u8(fs), m.u8(cs));
+    };
+  } else {
+    c.word(0).word(0);
+    c.host = [=](HostBuffers &m) {
+      bvb_hs_iterate_c(m.s16(ic), m.s16(iu), in_stride, m.s16(io), out_stride, w, h, nullptr, nullptr);
+    };
+  }
   return c;
 }
 
-// hs_iterate_n: the flow rows' and the coefficient rows' scratches are buffers 3 and 4.
+// hs_iterate_n: the flow rows' and the coefficient rows' scratches are buffers 3 and 4. With
+// in_stride 0 uv holds one row and the word after it, every row of the field.
 CheckCall iterate_n_call(int w, int h, const std::vector<int16_t> &coef, const std::vector<int16_t> &uv,
                          int in_stride, int out_stride, int iterations, const std::string &name) {
   CheckCall c;
@@ -278,7 +293,8 @@ CheckCall iterate_n_call(int w, int h, const std::vector<int16_t> &coef, const s
   c.cycle_limit = kLongCallLimit;
   const int pitch = BVB_HS_COEF_PITCH(w);
   int ic = c.in("coef", as_bytes(coef), {2, true, pitch, h, pitch});
-  int iu = c.in("uv_in", as_bytes(uv), {2, true, 2 * w, h, in_stride / 2});
+  const View uv_view = in_stride ? View{2, true, 2 * w, h, in_stride / 2} : View{2, true, 2 * w, 1, 2 * w + 2};
+  int iu = c.in("uv_in", as_bytes(uv), uv_view);
   int io = c.out("uv_out", size_t(out_stride) * (h - 1) + 4 * size_t(w), {2, true, 2 * w, h, out_stride / 2, 2});
   int fs = c.scratch("flow_scratch", BVB_HS_ITER_FLOW_SCRATCH_BYTES(w));
   int cs = c.scratch("coef_scratch", BVB_HS_ITER_COEF_SCRATCH_BYTES(w));
@@ -290,7 +306,6 @@ CheckCall iterate_n_call(int w, int h, const std::vector<int16_t> &coef, const s
   };
   return c;
 }
-constexpr int kIterFlowScratch = 3, kIterCoefScratch = 4;
 
 CheckCall full_call(int w, int h, int stride, const FramePair &p, int32_t alpha2, int iterations,
                     int out_stride, const std::string &name) {
@@ -304,11 +319,23 @@ CheckCall full_call(int w, int h, int stride, const FramePair &p, int32_t alpha2
   int i2 = c.in("i2", p.f2, fv);
   int io = c.out("uv_out", size_t(out_stride) * (h - 1) + 4 * size_t(w), {2, true, 2 * w, h, out_stride / 2, 2});
   int is = c.scratch("scratch", BVB_HS_SCRATCH_BYTES(w, h));
+  int fs = c.scratch("flow_scratch", BVB_HS_FLOW_SCRATCH_BYTES(w));
+  int cs = c.scratch("coef_scratch", BVB_HS_ITER_COEF_SCRATCH_BYTES(w));
   c.buf(i1).buf(i2).word(w).word(h).word(stride).word(alpha2).word(iterations).buf(io).word(out_stride).buf(is);
+  c.buf(fs).buf(cs);
   c.host = [=](HostBuffers &m) {
-    bvb_hornschunck_c(m.u8(i1), m.u8(i2), w, h, stride, alpha2, iterations, m.s16(io), out_stride, m.u8(is));
+    bvb_hornschunck_c(m.u8(i1), m.u8(i2), w, h, stride, alpha2, iterations, m.s16(io), out_stride, m.u8(is),
+                      m.u8(fs), m.u8(cs));
   };
   return c;
+}
+// hornschunck as the robot runs it: frames, flow and coefficients in SDRAM, the flow rows'
+// scratch in L1 bank B, the coefficient rows' in bank A (prepare's stream and the fused
+// iterations' DMA).
+constexpr int kFullFlowScratch = 4, kFullCoefScratch = 5;
+void place_full_robot(CheckCall &c) {
+  c.bufs[kFullFlowScratch].place = BVB_PLACE_L1B;
+  c.bufs[kFullCoefScratch].place = BVB_PLACE_L1A;
 }
 
 // Frames have no alignment contract; flow, coefficients and scratch are word-aligned.
@@ -384,10 +411,20 @@ void check(Checker &ck) {
         const std::vector<int16_t> coef = make_coef(s.w, s.h, rng, ck, &cn);
         const int is = flow_stride(s.w, rng), os = flow_stride(s.w, rng);
         const std::vector<int16_t> uv = make_flow(s.w, s.h, is, rng, &fn);
-        CheckCall c = iterate_call(s.w, s.h, coef, uv, is, os,
+        // A third without the scratches (the direct path), a third streamed as the robot
+        // would (frames in SDRAM, the scratches in L1 banks B and A), a third placed at random.
+        const int how = rng.uniform(0, 2);
+        CheckCall c = iterate_call(s.w, s.h, coef, uv, is, os, how != 0,
                                    size_name(s.w, s.h) + " strides " + std::to_string(is) + "/" +
                                        std::to_string(os) + " " + cn + " " + fn);
-        place(ck, c, rng);
+        if (how == 1) {
+          for (auto &b : c.bufs) b.skew = 0;
+          c.bufs[kIterFlowScratch].place = BVB_PLACE_L1B;
+          c.bufs[kIterCoefScratch].place = BVB_PLACE_L1A;
+          c.case_name += " frames SDRAM";
+        } else {
+          place(ck, c, rng);
+        }
         ck.add(std::move(c));
       }
   }
@@ -404,8 +441,9 @@ void check(Checker &ck) {
     for (Size s : nsizes) {
       std::string cn, fn;
       const std::vector<int16_t> coef = make_coef(s.w, s.h, rng, ck, &cn);
-      const int is = flow_stride(s.w, rng), os = flow_stride(s.w, rng);
-      const std::vector<int16_t> uv = make_flow(s.w, s.h, is, rng, &fn);
+      // A quarter with in_stride 0 (one row for every row: hornschunck's zero start field).
+      const int is = rng.uniform(0, 3) == 0 ? 0 : flow_stride(s.w, rng), os = flow_stride(s.w, rng);
+      const std::vector<int16_t> uv = is ? make_flow(s.w, s.h, is, rng, &fn) : make_flow(s.w, 1, 4 * s.w + 4, rng, &fn);
       static const int counts[] = {1, 2, 3, 4, 5, 7, 8, 9, 10, 17};
       int n = counts[rng.uniform(0, 9)];
       if (double(s.w) * s.h > 40000) n = std::min(n, 3);
@@ -438,7 +476,15 @@ void check(Checker &ck) {
                                 size_name(s.w, s.h) + " stride " + std::to_string(stride) + "/" +
                                     std::to_string(os) + " " + p.name + " alpha2_q4 " + std::to_string(a2) +
                                     " N=" + std::to_string(n));
-        place(ck, c, rng);
+        // Half as the robot runs it (the DMA paths of prepare and the iterations), half placed
+        // at random (the direct paths wherever a scratch is out of DMA's reach or not in L1).
+        if (rng.uniform(0, 1) == 0) {
+          for (auto &b : c.bufs) b.skew = b.role == Role::In ? uint32_t(rng.uniform(0, 3)) : 0;
+          place_full_robot(c);
+          c.case_name += " frames SDRAM";
+        } else {
+          place(ck, c, rng);
+        }
         ck.add(std::move(c));
       }
   }
@@ -457,7 +503,10 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
     bvb_hs_prepare_c(p.f1.data(), p.f2.data(), w, h, w, 1024, coef.data(), nullptr);
     std::vector<int16_t> uv(size_t(2) * w * h);
     for (auto &v : uv) v = int16_t(rng.uniform(-1024, 1024));
-    return iterate_call(w, h, coef, uv, 4 * w, 4 * w, size_name(w, h));
+    CheckCall c = iterate_call(w, h, coef, uv, 4 * w, 4 * w, true, size_name(w, h));
+    c.bufs[kIterFlowScratch].place = BVB_PLACE_L1B;  // coefficients and flow in SDRAM, streamed
+    c.bufs[kIterCoefScratch].place = BVB_PLACE_L1A;
+    return c;
   }
   if (kernel == "hs_iterate_n") {
     std::vector<int16_t> coef(BVB_HS_COEF_BYTES(w, h) / 2);
@@ -470,8 +519,10 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
     c.bufs[kIterCoefScratch].place = BVB_PLACE_L1A;
     return c;
   }
-  return full_call(w, h, w, p, 1024, kBenchIterations, 4 * w,
-                   size_name(w, h) + " N=" + std::to_string(kBenchIterations));
+  CheckCall c = full_call(w, h, w, p, 1024, kBenchIterations, 4 * w,
+                          size_name(w, h) + " N=" + std::to_string(kBenchIterations));
+  place_full_robot(c);  // frames, flow and coefficients in SDRAM
+  return c;
 }
 
 // Issues per pixel of the assembly's instruction mapping, one issue per cycle being one 32-bit
@@ -480,9 +531,12 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &rng) {
 //   iteration 10 (ALU/MAC; its 6 loads and 1 store ride along);
 //   prepare 17 = 1 (per-row sums: 4 stores per 4 columns) + 2 (column sums: 8 ALU per 4
 //     columns) + 14 (coefficients: 10 ALU/MAC + 4 pointer moves per pixel);
-//   hornschunck = 1 (zeroing the start flow: a store per pixel) + prepare + 10 per iteration.
+//   hornschunck = prepare + 10 per iteration (its zero start field is one row, read with
+//     stride 0).
 // prepare's bus bound with the frames and coefficients in SDRAM is lower: 2 bytes in and 6 out
 // per pixel at 0.5 byte per core cycle (bvb/dma.h) is 16.
+// hs_iterate streamed (the bench: frames in SDRAM, scratches in L1) is hs_iterate_n's one pass
+// of one level: the larger of 10 and 28, the bus's.
 // hs_iterate_n (frames in SDRAM): per pass of L fused levels (bvb/hornschunck.h: FUSED
 // ITERATIONS; N = 10 at 160 and 320 wide is two passes of 5, at 640 five of 2) the larger of
 // the compute, 10 L, and the bus, 14 bytes a pixel (6 coefficients and 4 flow in, 4 flow out)
@@ -501,10 +555,10 @@ double iterate_n_bound(int w, int iterations) {
 
 double lower_bound(const std::string &kernel, int w, int h) {
   const double px = double(w) * h;
-  if (kernel == "hs_iterate") return 10 * px;
+  if (kernel == "hs_iterate") return iterate_n_bound(w, 1) * px;  // streamed: the bus's 28
   if (kernel == "hs_iterate_n") return iterate_n_bound(w, kBenchIterations) * px;
   if (kernel == "hs_prepare") return 17 * px;
-  if (kernel == "hornschunck") return (1 + 17 + 10.0 * kBenchIterations) * px;
+  if (kernel == "hornschunck") return (17 + 10.0 * kBenchIterations) * px;
   return 0;
 }
 
@@ -524,6 +578,7 @@ RunPlan plan_run(RunRequest &req) {
   FramePair p{a.data, b.data, "run"};
   RunPlan plan;
   plan.call = full_call(w, h, w, p, 16 * alpha * alpha, iterations, 4 * w, "run");
+  place_full_robot(plan.call);
   plan.write = [w, h](std::vector<std::vector<uint8_t>> &bufs, const std::string &path) {
     // Q9 to pixels: value / 512 is exact in float.
     const int16_t *uv = reinterpret_cast<const int16_t *>(bufs[2].data());

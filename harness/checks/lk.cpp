@@ -46,8 +46,11 @@ CheckCall pyramid_call(int w, int h, int stride, int levels, std::vector<uint8_t
   c.pixels = std::max<double>(1, double(bytes));
   int is = c.in("src", std::move(src), View{1, false, w, h, stride});
   int ip = c.out("pyr", std::max<size_t>(bytes, 4), View{1, false});
-  c.buf(is).word(w).word(h).word(stride).word(levels).buf(ip);
-  c.host = [=](HostBuffers &m) { bvb_lk_pyramid_c(m.u8(is), w, h, stride, levels, m.u8(ip)); };
+  int ic = c.scratch("scratch", BVB_LK_PYRAMID_SCRATCH_BYTES(w));
+  c.buf(is).word(w).word(h).word(stride).word(levels).buf(ip).buf(ic);
+  c.host = [=](HostBuffers &m) {
+    bvb_lk_pyramid_streamed_c(m.u8(is), w, h, stride, levels, m.u8(ip), m.u8(ic));
+  };
   return c;
 }
 
@@ -128,7 +131,9 @@ void check(Checker &ck) {
                                    size_name(s.w, s.h) + " stride " +
                                        std::to_string(stride) + " levels " + std::to_string(levels) + " " +
                                        pattern_name(p));
-        ck.place_randomly(c);
+        // Half the calls as the robot runs it: the frame and the levels in SDRAM, the bands
+        // through the scratch in L1.
+        ck.place_streaming(c, 2, rng);
         c.bufs[0].skew = uint32_t(rng.uniform(0, 3));  // the frame has no alignment contract
         ck.add(std::move(c));
       }
@@ -174,7 +179,17 @@ void check(Checker &ck) {
                       s.w, s.h, t.stride, pattern_name(kind), variant == 1 ? "/noise" : "", dx, dy, p.levels, p.win_w,
                       p.win_h, p.max_iter, p.flags ? " fixed" : "", p.eps_q16, p.min_det, p.count);
         CheckCall c = track_call(t, name);
-        ck.place_randomly(c);
+        if (rng.uniform(0, 1) == 0) {
+          // As the robot runs it: frames and levels in SDRAM, the scratch in L1 at any word of a
+          // 4 KB sub-bank, so that the level copies (by DMA) and the windows that leave them
+          // are taken.
+          c.bufs[7].place = BVB_PLACE_L1B;
+          c.bufs[7].align = 4096;
+          c.bufs[7].skew = uint32_t(4 * rng.uniform(0, 1023));
+          c.case_name += " frames SDRAM";
+        } else {
+          ck.place_randomly(c);
+        }
         for (int b : {0, 2}) c.bufs[b].skew = uint32_t(rng.uniform(0, 3));
         ck.add(std::move(c));
       }
@@ -219,7 +234,11 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &) {
   t.h = h;
   t.stride = w;
   bench_pair(w, h, t.prev, t.next);
-  if (kernel == "lk_pyramid") return pyramid_call(w, h, w, 3, t.prev, size);
+  if (kernel == "lk_pyramid") {
+    CheckCall c = pyramid_call(w, h, w, 3, t.prev, size);
+    c.bufs[2].place = BVB_PLACE_L1B;  // the frame and the levels in SDRAM, the bands in L1
+    return c;
+  }
   t.features = corners(t.prev, w, h, 32);
   bvb_lk_params &p = t.params;
   p.levels = 3;
@@ -231,16 +250,28 @@ CheckCall bench_call(const std::string &kernel, int w, int h, Rng &) {
   p.count = int32_t(t.features.size() / 2);
   CheckCall c = track_call(t, size);
   c.pixels = 32.0 * 49 * 10 * 3;
+  // Frames and levels in SDRAM, the scratch in L1 across a 4 KB sub-bank boundary, where a
+  // caller with room puts it (bvb_lk_scratch_place; the odometry does): the iteration's two
+  // groups of arrays on either side, the level copies beside the template.
+  c.bufs[7].place = BVB_PLACE_L1B;
+  c.bufs[7].align = 4096;
+  c.bufs[7].skew = 2048;
   return c;
 }
 
 // lk_pyramid: per output pixel four input bytes; BYTEOP2P averages two outputs' 2x2 blocks per
-// issue and BYTEPACK packs four outputs: 0.75 issues per output pixel.
+// issue and BYTEPACK packs four outputs: 0.75 issues per output pixel. With the frame and the
+// levels in SDRAM the bus is the bound: the frame's 2 (h >> 1) w bytes in and the levels' bytes
+// out at 0.5 byte per core cycle (bvb/dma.h): 8.4 cycles per level byte at 3 levels.
 // lk_track: per window pixel per iteration the bilinear sample (4 products: 2 dual-MAC issues),
 // the difference (half a vector subtract) and b (2 products: 1 issue): 3.5 issues per work unit,
 // not counting the per-level template work.
 double lower_bound(const std::string &kernel, int w, int h) {
-  if (kernel == "lk_pyramid") return 0.75 * double(bvb_lk_pyramid_bytes(w, h, 3));
+  if (kernel == "lk_pyramid") {
+    double out = 0;
+    for (int l = 1; l < 3; ++l) out += double(w >> l) * (h >> l);
+    return std::max(0.75 * double(bvb_lk_pyramid_bytes(w, h, 3)), 2.0 * (2.0 * (h >> 1) * w + out));
+  }
   return 3.5 * 32 * 49 * 10 * 3;
 }
 

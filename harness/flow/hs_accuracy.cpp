@@ -53,9 +53,11 @@ std::vector<HsAccuracyRow> hs_accuracy_table(const std::string &dir, int32_t alp
     if (w < BVB_HS_MIN_DIM || h < BVB_HS_MIN_DIM) throw InputError(base + ": frames too small");
 
     std::vector<uint32_t> scratch((BVB_HS_SCRATCH_BYTES(w, h) + 3) / 4);
+    std::vector<uint32_t> flow_scratch((BVB_HS_FLOW_SCRATCH_BYTES(w) + 3) / 4);
+    std::vector<uint32_t> coef_scratch((BVB_HS_ITER_COEF_SCRATCH_BYTES(w) + 3) / 4);
     std::vector<int16_t> uv(size_t(2) * w * h);
     bvb_hornschunck_c(f1.data.data(), f2.data.data(), w, h, w, alpha2_q4, iterations, uv.data(),
-                      4 * w, scratch.data());
+                      4 * w, scratch.data(), flow_scratch.data(), coef_scratch.data());
     const FlowField fixed = flow_from_fixed(uv.data(), w, h, 4 * w, BVB_HS_UV_FRAC_BITS);
     const FlowField dbl = hs_flow_double(f1, f2, alpha, iterations);
 

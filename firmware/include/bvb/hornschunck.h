@@ -87,8 +87,8 @@
  *   coefficient rows) and moves the 14 bytes once for the L: 28 / L cycles an iteration, under
  *   the compute from L = 3. bvb_hs_prepare_asm streams its rows too (the frames' rows in, the
  *   coefficient rows out, through BVB_HS_PREPARE_SCRATCH_BYTES of L1); bvb_hs_iterate_asm (one
- *   iteration) and bvb_hornschunck_asm (whose one scratch holds frame-sized buffers) read and
- *   write the frames where they are.
+ *   iteration) reads and writes the frames where they are; bvb_hornschunck_asm is prepare
+ *   and one bvb_hs_iterate_n_asm.
  *
  * ASSEMBLY PLAN (BF537; one 32-bit ALU/MAC instruction per cycle plus two loads or one load and
  *   one store in parallel; counts are issue slots per pixel, loads ride in the parallel slots).
@@ -146,10 +146,11 @@ extern "C" {
 #define BVB_HS_RSQRT_ENTRIES 768
 
 /* Coefficient row pitch in int16 units, bytes for a whole frame, and the scratch that
- * bvb_hornschunck needs (coefficients, then one flow buffer of width * height pairs). */
+ * bvb_hornschunck needs (coefficients, then one zero row of flow and the word after it: the
+ * start field, read with stride 0). */
 #define BVB_HS_COEF_PITCH(w) (3 * (w) + ((w) & 1))
 #define BVB_HS_COEF_BYTES(w, h) (2 * BVB_HS_COEF_PITCH(w) * (h))
-#define BVB_HS_SCRATCH_BYTES(w, h) (BVB_HS_COEF_BYTES(w, h) + 4 * (w) * (h))
+#define BVB_HS_SCRATCH_BYTES(w, h) (BVB_HS_COEF_BYTES(w, h) + 4 * (w) + 4)
 
 /* The L1 scratch of bvb_hs_prepare_asm's streamed path: the row-band stream (bvb/stream.h) of
  * rows 1..h-1 of both frames in and coefficient rows 0..h-2 out, and two rows of per-row sums
@@ -181,6 +182,12 @@ extern "C" {
 #define BVB_HS_ITER_FLOW_SCRATCH_BYTES(w) (12 * (w) * (BVB_HS_ITER_LEVELS(w) + 1))
 #define BVB_HS_ITER_COEF_SCRATCH_BYTES(w) (2 * BVB_HS_COEF_PITCH(w) * (BVB_HS_ITER_LEVELS(w) + 1))
 
+/* bvb_hornschunck's flow-row scratch: prepare's stream, then the fused iterations' rings. */
+#define BVB_HS_FLOW_SCRATCH_BYTES(w)                                                         \
+  (BVB_HS_PREPARE_SCRATCH_BYTES(w) > BVB_HS_ITER_FLOW_SCRATCH_BYTES(w)                       \
+       ? BVB_HS_PREPARE_SCRATCH_BYTES(w)                                                     \
+       : BVB_HS_ITER_FLOW_SCRATCH_BYTES(w))
+
 /* rsqrt mantissas used by prepare (1536 bytes; the assembly reads the same table). */
 extern const int16_t bvb_hs_rsqrt_table[BVB_HS_RSQRT_ENTRIES];
 
@@ -197,14 +204,23 @@ void bvb_hs_prepare_c(const uint8_t *i1, const uint8_t *i2, int32_t width, int32
 void bvb_hs_prepare_asm(const uint8_t *i1, const uint8_t *i2, int32_t width, int32_t height,
                         int32_t stride, int32_t alpha2_q4, int16_t *coef, void *scratch);
 
-/* One Jacobi iteration uv_in -> uv_out; the caller ping-pongs the two buffers. */
+/* One Jacobi iteration uv_in -> uv_out; the caller ping-pongs the two buffers. flow_scratch
+ * and coef_scratch: NULL, or as bvb_hs_iterate_n's (BVB_HS_ITER_FLOW_SCRATCH_BYTES(width) and
+ * BVB_HS_ITER_COEF_SCRATCH_BYTES(width) bytes, 4-byte aligned): given, the assembly is
+ * bvb_hs_iterate_n_asm with one iteration, the rows streamed through them by DMA where it
+ * reaches (the frames in SDRAM, the scratches in L1: bus-bound, 14 bytes a pixel at 0.5 a
+ * cycle); NULL, it reads and writes the buffers where they are. The C reference uses neither. */
 void bvb_hs_iterate_c(const int16_t *coef, const int16_t *uv_in, int32_t in_stride,
-                      int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height);
+                      int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height,
+                      void *flow_scratch, void *coef_scratch);
 void bvb_hs_iterate_asm(const int16_t *coef, const int16_t *uv_in, int32_t in_stride,
-                        int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height);
+                        int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height,
+                        void *flow_scratch, void *coef_scratch);
 
 /* `iterations` (>= 1; fewer: nothing is written) Jacobi iterations uv_in -> uv_out, exactly
  * those of as many bvb_hs_iterate calls ping-ponging two buffers (uv_in is left as it was).
+ * in_stride may also be 0: every row of the field is the one row at uv_in (4 width + 4 bytes
+ * there: the assembly reads the word after it), as bvb_hornschunck starts from zero flow.
  * The assembly fuses them (FUSED ITERATIONS below): up to BVB_HS_ITER_LEVELS(width) in one pass
  * down the frame, the intermediate rows in flow_scratch, the coefficient rows in coef_scratch.
  * flow_scratch: BVB_HS_ITER_FLOW_SCRATCH_BYTES(width) bytes, coef_scratch:
@@ -218,14 +234,18 @@ void bvb_hs_iterate_n_asm(const int16_t *coef, const int16_t *uv_in, int32_t in_
                           int16_t *uv_out, int32_t out_stride, int32_t width, int32_t height,
                           int32_t iterations, void *flow_scratch, void *coef_scratch);
 
-/* Prepare plus `iterations` (>= 0) iterations from zero flow; the result is in uv_out.
- * scratch: BVB_HS_SCRATCH_BYTES(width, height) bytes, 4-byte aligned. */
+/* Prepare plus `iterations` iterations from zero flow (bvb_hs_prepare, then one
+ * bvb_hs_iterate_n); the result is in uv_out (zero flow for iterations < 1). scratch:
+ * BVB_HS_SCRATCH_BYTES(width, height) bytes, 4-byte aligned (the coefficients; SDRAM on the
+ * robot). flow_scratch: BVB_HS_FLOW_SCRATCH_BYTES(width) bytes, coef_scratch:
+ * BVB_HS_ITER_COEF_SCRATCH_BYTES(width) bytes, 4-byte aligned: prepare's stream and the
+ * iterations' rings (L1 banks B and A on the robot, as bvb_hs_iterate_n says). */
 void bvb_hornschunck_c(const uint8_t *i1, const uint8_t *i2, int32_t width, int32_t height,
                        int32_t stride, int32_t alpha2_q4, int32_t iterations, int16_t *uv_out,
-                       int32_t out_stride, void *scratch);
+                       int32_t out_stride, void *scratch, void *flow_scratch, void *coef_scratch);
 void bvb_hornschunck_asm(const uint8_t *i1, const uint8_t *i2, int32_t width, int32_t height,
                          int32_t stride, int32_t alpha2_q4, int32_t iterations, int16_t *uv_out,
-                         int32_t out_stride, void *scratch);
+                         int32_t out_stride, void *scratch, void *flow_scratch, void *coef_scratch);
 
 #ifdef __cplusplus
 }

@@ -57,10 +57,22 @@
  * int32 per feature (x, y in Q16 in next, status, iterations summed over the levels, and the
  * last iteration's bx, by, 0 if none ran); a lost feature reports where it was lost (its input
  * position when its level-0 template was unusable). scratch: BVB_LK_SCRATCH_BYTES, 4-byte
- * aligned, any contents. width, height >= 1 and <= 16384; feature coordinates within
- * +-16384 pixels. bvb_lk_pyramid: 1 <= levels <= BVB_LK_MAX_LEVELS (a level of zero size is
+ * aligned, any contents; in L1 where memory DMA reaches, the assembly also keeps there the
+ * copies of each level step's windows that it brings from SDRAM (bvb_lk_track_run's fetch,
+ * below), when the window's arrays leave room; only speed depends on it. width, height >= 1
+ * and <= 16384; feature coordinates within +-16384 pixels. bvb_lk_pyramid: 1 <= levels <= BVB_LK_MAX_LEVELS (a level of zero size is
  * empty); pyr 4-byte aligned; its assembly reads the frame by aligned words (up to 3 bytes
- * either side of a row). */
+ * either side of a row).
+ *
+ * STREAMED PYRAMID (bvb_lk_pyramid_streamed, the registry's lk_pyramid): the same levels, with
+ * scratch: BVB_LK_PYRAMID_SCRATCH_BYTES(width) bytes, 4-byte aligned, any contents. With the
+ * frame in SDRAM and the scratch in L1 where memory DMA reaches it, the assembly brings the
+ * frame's rows into the scratch by memory DMA, BVB_LK_PYR_BAND(width) level-1 rows' worth a
+ * band (twice as many frame rows), double-buffered, computes levels 1 to 3 of the band there
+ * and sends them to pyr by DMA (or writes them straight into pyr when pyr is not in SDRAM);
+ * level 4 (levels = 5) is made from level 3 afterwards. Elsewhere (the frame in L1, the
+ * scratch where DMA does not reach, no level to make) it is bvb_lk_pyramid_asm. The C
+ * reference is bvb_lk_pyramid_c (the scratch unused). */
 #ifndef BVB_LK_H
 #define BVB_LK_H
 
@@ -72,11 +84,25 @@
 #define BVB_LK_LEFT 1
 #define BVB_LK_FLAT 2
 #define BVB_LK_NOT_CONVERGED 3
+#define BVB_LK_REFETCH 4           /* the iteration step only: the window left the bytes it has */
 
 #define BVB_LK_OUT_WORDS 6
 #define BVB_LK_SCRATCH_BYTES 4096
 
 #define BVB_LK_LEVEL_STRIDE(w) (((w) + 3) & ~3)
+
+/* The streamed pyramid's scratch: two DMA jobs (bvb/dma.h's BVB_DMA_JOB_BYTES each) and, twice,
+ * a band of 2 B frame rows (rows of (w + 3) & ~3 bytes) and its B, B/2, B/4 rows of levels 1 to
+ * 3 (rows of their level strides), B = BVB_LK_PYR_BAND(w): 13,824 bytes at 160, 320 and 640
+ * wide. B is a multiple of 4, so a band's level-2 and level-3 rows are whole. */
+#define BVB_LK_PYR_BAND(w) ((w) <= 192 ? 16 : (w) <= 384 ? 8 : 4)
+#define BVB_LK_PYR_JOB_BYTES 112
+#define BVB_LK_PYRAMID_SCRATCH_BYTES(w)                                                        \
+  (2 * BVB_LK_PYR_JOB_BYTES +                                                                  \
+   2 * (2 * BVB_LK_PYR_BAND(w) * BVB_LK_LEVEL_STRIDE(w) +                                     \
+        BVB_LK_PYR_BAND(w) * BVB_LK_LEVEL_STRIDE((w) >> 1) +                                  \
+        (BVB_LK_PYR_BAND(w) >> 1) * BVB_LK_LEVEL_STRIDE((w) >> 2) +                           \
+        (BVB_LK_PYR_BAND(w) >> 2) * BVB_LK_LEVEL_STRIDE((w) >> 3)))
 
 /* The iteration block (int32 words) shared by the C and assembly iteration steps. */
 #define BVB_LK_IT_STRIDE 0
@@ -96,7 +122,11 @@
 #define BVB_LK_IT_ITERS 14         /* out */
 #define BVB_LK_IT_BX 15            /* out */
 #define BVB_LK_IT_BY 16
-#define BVB_LK_IT_WORDS 17
+#define BVB_LK_IT_RX0 17           /* the bytes the step may read: x in [RX0, RX1], y in [RY0, RY1] */
+#define BVB_LK_IT_RY0 18
+#define BVB_LK_IT_RX1 19
+#define BVB_LK_IT_RY1 20
+#define BVB_LK_IT_WORDS 21
 
 /* The patch block (int32 words). */
 #define BVB_LK_PA_STRIDE 0
@@ -138,6 +168,17 @@ void bvb_lk_pyramid_c(const uint8_t *src, int32_t width, int32_t height, int32_t
 void bvb_lk_pyramid_asm(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
                         int32_t levels, uint8_t *pyr);
 
+void bvb_lk_pyramid_streamed_c(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
+                               int32_t levels, uint8_t *pyr, void *scratch);
+void bvb_lk_pyramid_streamed_asm(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
+                                 int32_t levels, uint8_t *pyr, void *scratch);
+/* The streamed pyramid's driver (Blackfin only: it runs the DMA), with `level` making the
+ * levels of a band (bvb_lk_pyramid_asm's signature). */
+typedef void (*bvb_lk_level_fn)(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
+                                int32_t levels, uint8_t *pyr);
+void bvb_lk_pyramid_stream_run(const uint8_t *src, int32_t width, int32_t height, int32_t stride,
+                               int32_t levels, uint8_t *pyr, void *scratch, bvb_lk_level_fn level);
+
 void bvb_lk_track_c(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_t *next,
                     const uint8_t *next_pyr, int32_t width, int32_t height, int32_t stride,
                     const struct bvb_lk_params *params, const int32_t *in, int32_t *out,
@@ -153,7 +194,11 @@ void bvb_lk_track_asm(const uint8_t *prev, const uint8_t *prev_pyr, const uint8_
  * T on the window (int16, rows of wx + 1, the last column 0), grad the words Ix | Iy << 16 (same
  * layout, the last column 0); work holds the extended template.
  * iterate: the iterations of one level (block BVB_LK_IT_*); returns BVB_LK_TRACKED (converged),
- * BVB_LK_NOT_CONVERGED or BVB_LK_LEFT. Its work holds h; the assembly keeps the differences
+ * BVB_LK_NOT_CONVERGED or BVB_LK_LEFT, or BVB_LK_REFETCH when an iteration's window (the bytes
+ * x = ix - hx .. ix + hx + 1, y = iy - hy .. iy + hy + 1) is inside the image but not inside
+ * [RX0, RX1] x [RY0, RY1], the bytes img holds (a copy of part of the level): QX, QY and ITERS
+ * are then those at that iteration's start, and the rest of the level runs again on the level
+ * itself with MAXITER less ITERS. Its work holds h; the assembly keeps the differences
  * in the 2 wy (wx + 1) + 8 bytes after the template's end (the driver's scratch layout leaves
  * them free, in the template's L1 sub-bank). */
 typedef void (*bvb_lk_patch_fn)(const uint8_t *img, int16_t *tmpl, int32_t *grad, int16_t *work,
@@ -166,9 +211,33 @@ int32_t bvb_lk_iterate_c(const uint8_t *img, const int16_t *tmpl, const int32_t 
                          int32_t *block);
 int32_t bvb_lk_iterate_asm(const uint8_t *img, const int16_t *tmpl, const int32_t *grad,
                            int16_t *work, int32_t *block);
+/* fetch: copies of parts of the levels into L1 for the next level step (bvb_lk_track_run): up
+ * to n blocks, bvb_dma_xfer's fields and a key (the same key: the same shape, level and image,
+ * so a slot prepared for it need only be re-addressed); starts them on job (BVB_DMA_JOB_BYTES,
+ * keys: BVB_DMA_MAX_XFERS words of the job's slot keys) and returns a mask of the blocks that
+ * will be there after fetch_wait (the others stay where they are: the images already in L1).
+ * fetch_wait: waits for the last fetch; nonzero when it failed (its blocks are not there).
+ * Both NULL: no copies. fetch(scratch, 0, 0, 0): nonzero when copies into the scratch are
+ * worth asking for (it is in L1 where DMA reaches); fetch(level, 0, 0, -1): nonzero when
+ * copies from that level's image are (it is in SDRAM). */
+struct bvb_lk_copy {
+  const void *src;
+  int32_t src_stride;
+  void *dst;
+  int32_t dst_stride;
+  int32_t width;
+  int32_t rows;
+  int32_t key;
+};
+typedef int32_t (*bvb_lk_fetch_fn)(void *job, int32_t *keys, const struct bvb_lk_copy *c, int32_t n);
+typedef int32_t (*bvb_lk_fetch_wait_fn)(void);
+int32_t bvb_lk_fetch_dma(void *job, int32_t *keys, const struct bvb_lk_copy *c, int32_t n);
+int32_t bvb_lk_fetch_wait_dma(void);
 struct bvb_lk_ops {
   bvb_lk_patch_fn patch;
   bvb_lk_iterate_fn iterate;
+  bvb_lk_fetch_fn fetch;
+  bvb_lk_fetch_wait_fn fetch_wait;
 };
 /* Where in an area of `bytes` bytes (4-byte aligned, at least BVB_LK_SCRATCH_BYTES) a caller
  * with room to spare puts the tracker's scratch for win_w x win_h windows: the first 4-byte

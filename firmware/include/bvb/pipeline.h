@@ -375,7 +375,8 @@ struct bvb_flow_avoid_kernels {
   void (*hs_prepare)(const uint8_t *i1, const uint8_t *i2, int32_t width, int32_t height, int32_t stride,
                      int32_t alpha2_q4, int16_t *coef, void *scratch);
   void (*hs_iterate)(const int16_t *coef, const int16_t *uv_in, int32_t in_stride, int16_t *uv_out,
-                     int32_t out_stride, int32_t width, int32_t height);
+                     int32_t out_stride, int32_t width, int32_t height, void *flow_scratch,
+                     void *coef_scratch);
 };
 
 int32_t bvb_pipe_flow_avoid_run(const struct bvb_flow_avoid_kernels *k, const uint8_t *frame,
