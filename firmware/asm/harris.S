@@ -950,7 +950,7 @@ _bvb_harris_response_asm:
  * the 2x2 blocks reach the full test); the C scan takes 15-17 per pixel (4.8x, 8.2x, 4.9x).
  * Lower bound: 1 issue per pixel (each value through the one 32-bit ALU once). With the map
  * in SDRAM (the bench) the scan streams it (bvb_harris_nms_stream_asm, at the end of this file):
- * 692,949 modelled cycles at 320x240 against the bus bound of 614,400. */
+ * 693,069 modelled cycles at 320x240 against the bus bound of 614,400. */
 #define C_W      -4
 #define C_PAIRS  -8    /* row pairs left */
 #define C_ROW    -12   /* the upper row of the pair, + 4 (x = 1) */
@@ -1282,12 +1282,12 @@ _bvb_harris_nms_asm:
  *
  * Measured (bfbench bench, the integer texture's response, threshold 1% of the peak; map and
  * cand in SDRAM, scratch in L1 bank B; modelled cycles, then the simulator's own count):
- *   160x120     189,656   9.88 per pixel (bound 8: 1.23x)   sim   172,816
- *   320x240     692,949   9.02           (1.13x)            sim   650,748
+ *   160x120     189,788   9.88 per pixel (bound 8: 1.24x)   sim   172,816
+ *   320x240     693,069   9.02           (1.13x)            sim   650,748
  *   (640x480: the scratch, 42 KB, does not fit L1 bank B's arena: bvb_harris_nms_asm on the
- *   map in SDRAM, 5,477,343.) Before: bvb_harris_nms_asm on the map in SDRAM through the data
- *   cache, 400,418 / 1,516,068 (its line fills 800,275 of the 320x240 count). C: 539,076 /
- *   2,115,060.
+ *   map in SDRAM, 5,477,247.) Before: bvb_harris_nms_asm on the map in SDRAM through the data
+ *   cache, 400,418 / 1,516,068 (its line fills 800,275 of the 320x240 count). C: 539,223 /
+ *   2,115,219.
  * Bound: the map's 4 bytes per pixel over the bus at 0.5 byte per core cycle, 8 per pixel
  * (614,400 at 320x240; the scan's compute bound is 1). Where the rest of 320x240 goes: the
  * bus also carries the candidates (2,083, 16.7 KB: some 33,000 cycles) and the jobs' start-up
