@@ -43,23 +43,24 @@
  *
  * Measured (bfbench bench, frames in SDRAM, scratch in L1B; modelled cycles under --timing
  * bf537, then the simulator's own count, --timing none):
- *   160x120     365,829  19.05 per pixel (bound 11.5: 1.66x)   sim   309,415
- *   320x240   1,244,191  16.20           (1.41x)                sim 1,117,775
- *   640x480   4,429,624  14.42           (1.25x)                sim 4,232,095
- *   (dst in SDRAM: the test of where dst is costs some 8 cycles a row over the counts before
- *   it, 365,330 / 1,243,212 / 4,427,685.)
- *   (C -O2 from SDRAM: 3,008,323 / 12,238,890 / 49,397,594.) Before the DMA path (frames and
+ *   160x120     350,484  18.25 per pixel (bound 11.5: 1.59x)   sim   310,595
+ *   320x240   1,172,856  15.27           (1.33x)                sim 1,120,155
+ *   640x480   4,375,324  14.24           (1.24x)                sim 4,236,875
+ *   (before the window sums' W store moved off the issue that loads plane C and the gy loop's
+ *   two rows off one issue: 365,829 / 1,244,191 / 4,429,624; dst in SDRAM: the test of where
+ *   dst is costs some 8 cycles a row.)
+ *   (C -O2 from SDRAM: 3,008,346 / 12,238,913 / 49,397,617.) Before the DMA path (frames and
  *   scratch read and written in place in SDRAM through the data cache): 793,108 modelled at
  *   160x120 (41 per pixel; sim 274,911), the response's 4 bytes per pixel paying a line fill
  *   and a write-back per 8 pixels.
- *   Where the 160x120 cycles go over the bound's 220,800: the PACKs of the window sums (1.5
- *   per pixel) and the per-row set-up of the four passes (sim 274,911 before the DMA path);
- *   the DMA bookkeeping (about 290 cycles a row: sim 308,916); then under the model L1
- *   sub-bank collisions, 41,108 cycles in the whole simulator run of the call
- *   (--timing-report): the column sums load slot 0 in the issue that stores cxx or cxy, the
- *   window sums load plane C in the issue that stores its W plane, the gradient loops load
- *   two rows of one sub-bank (not yet placed apart); the fill (job A, 4 rows) and the last
- *   row's transfer, which no compute covers. At 640x480 the per-row costs weigh a quarter.
+ *   Where the 320x240 cycles go over the bound's 883,200 (1,092,689 issues, bfbench profile):
+ *   the PACKs of the window sums (1.5 per pixel, 115,000) and the per-row set-up of the four
+ *   passes; the DMA bookkeeping (about 290 cycles a row, 68,000); then under the model
+ *   multi-cycle branches and calls 38,045, L1 sub-bank collisions 22,348 (the gx loop loads
+ *   one row at -1 and +1, unaligned, so by the BYTEOP's own issue: 18,564; the column sums
+ *   load slot 0 in the issue that stores cxx or cxy), MMR accesses 16,480; the fill (job A,
+ *   4 rows) and the last row's transfer, which no compute covers. At 640x480 the per-row
+ *   costs weigh a quarter.
  * Working set: 24 * NG + 144 bytes of working rows, then the DMA region (job, four image rows,
  * two response rows): BVB_HARRIS_SCRATCH_BYTES, 6.4 KB at 160, 23.7 KB at 640. */
 #include "bvb/dma.h"
@@ -284,8 +285,8 @@ _bvb_harris_response_asm:
 	r0 = [i0++];
 	r1 = pack (r0.l, r2.h);
 	lsetup (.Lw_s, .Lw_e) lc0 = p3;
-.Lw_s:	r4 = r1 +|+ r0 || r2 = [i0++] || [i1++] = r5;
-	r3 = pack (r2.l, r0.h);
+.Lw_s:	r4 = r1 +|+ r0 || r2 = [i0++];
+	r3 = pack (r2.l, r0.h) || [i1++] = r5;  /* not beside the load: C and W share sub-banks */
 	r4 = r4 +|+ r3 || r0 = [i0++];
 	r1 = pack (r0.l, r2.h) || [i1++] = r4;
 	r5 = r3 +|+ r2;
@@ -817,11 +818,27 @@ _bvb_harris_response_asm:
 	/* gy = dn - up, pixels 0 .. 8 n8 - 1 */
 	i0 = r4;
 	i1 = r3;
+	r0 = r4 | r3;
+	r7 = 3;
+	r0 = r0 & r7;
+	cc = r0 == 0;           /* both rows word-aligned (the DMA path's ring rows) */
 	r0 = p1;
 	r0 += -4;               /* the pipelined first store is garbage: into the pad */
 	i2 = r0;
 	disalgnexcpt || r0 = [i0++] || r2 = [i1++];
 	disalgnexcpt || r1 = [i0++] || r3 = [i1++];
+	if !cc jump .Lgy_u;
+	/* aligned rows: the two rows' loads in different issues, since the ring's rows y and
+	 * y+2 share a sub-bank (a dual load of them costs a cycle) */
+	lsetup (.Lgya_s, .Lgya_e) lc0 = p3;
+.Lgya_s: (r5, r4) = byteop16m (r1:0, r3:2) || r0 = [i0++];
+	r4 = r4 << 5 (v) || [i2++m2] = r7 || r2 = [i1++];
+	r5 = r5 << 5 (v) || [i2++m2] = r4;
+	(r7, r6) = byteop16m (r1:0, r3:2) (r) || r1 = [i0++];
+	r6 = r6 << 5 (v) || [i2++m2] = r5 || r3 = [i1++];
+.Lgya_e: r7 = r7 << 5 (v) || [i2++m2] = r6;
+	jump .Lgy_j;
+.Lgy_u:
 	lsetup (.Lgy_s, .Lgy_e) lc0 = p3;
 .Lgy_s:	(r5, r4) = byteop16m (r1:0, r3:2) || r0 = [i0++] || r2 = [i1++];
 	r4 = r4 << 5 (v) || [i2++m2] = r7;
@@ -829,6 +846,7 @@ _bvb_harris_response_asm:
 	(r7, r6) = byteop16m (r1:0, r3:2) (r) || r1 = [i0++] || r3 = [i1++];
 	r6 = r6 << 5 (v) || [i2++m2] = r5;
 .Lgy_e:	r7 = r7 << 5 (v) || [i2++m2] = r6;
+.Lgy_j:
 	[i2++m2] = r7;
 	/* gx = mid[x+1] - mid[x-1] */
 	r5 = p0;
@@ -930,7 +948,9 @@ _bvb_harris_response_asm:
  * Cycles (bfbench bench, the response of real frames, threshold 1% of the peak): 65,368 at
  * 160x120, 142,574 at 320x240, 1,041,495 at 640x480 (3.4, 1.9, 3.4 per pixel; 13%, 4% and 13% of
  * the 2x2 blocks reach the full test); the C scan takes 15-17 per pixel (4.8x, 8.2x, 4.9x).
- * Lower bound: 1 issue per pixel (each value through the one 32-bit ALU once). */
+ * Lower bound: 1 issue per pixel (each value through the one 32-bit ALU once). With the map
+ * in SDRAM (the bench) the scan streams it (bvb_harris_nms_stream_asm, at the end of this file):
+ * 693,069 modelled cycles at 320x240 against the bus bound of 614,400. */
 #define C_W      -4
 #define C_PAIRS  -8    /* row pairs left */
 #define C_ROW    -12   /* the upper row of the pair, + 4 (x = 1) */
@@ -1225,3 +1245,754 @@ _bvb_harris_nms_asm:
 .Lc_p_e: p4 += 1;
 	rts;
 	.size _bvb_harris_nms_asm, . - _bvb_harris_nms_asm
+
+/* bvb_harris_nms_stream_asm: bvb_harris_nms with the response map in SDRAM (the stand-alone
+ * scan: kernels.def's harris_nms), its rows brought into L1 by memory DMA (bvb/dma.h) ahead of
+ * the scan; the same arguments, the same candidates. The odometry keeps calling
+ * bvb_harris_nms_asm: its response strips are in L1 already.
+ *
+ * The ring. Row pair m (map rows 2m, 2m+1) goes to slot m % 5 of two regions, the even row to
+ * E, the odd row to O, O starting at the first 4 KB boundary after E's end: a pair's upper row
+ * (odd) and lower row (even) are never in one L1 sub-bank, so the scan's dual loads of the two
+ * never collide. Pair j (rows 2j+1, 2j+2) reads row pairs j and j+1; the rows above an upper
+ * row and below a lower row are G = O - E away, the lower row Dp = E(j+1 % 5) - O(j % 5)
+ * from the upper: the pair code (.Ls_do_pair) is bvb_harris_nms_asm's with those two
+ * distances, the above-threshold test inline (a taken jump for the 57% of blocks below the
+ * threshold at the bench's 1% of the peak, instead of two for the 43% above), the next block
+ * reloaded while the winner's row pointers settle (no address-register stall), the rows
+ * above and below the winner (one region) each loaded beside a load of the winner's own row
+ * (no sub-bank collision), and a candidate's key made from the winner's address and a
+ * per-row constant.
+ *
+ * The jobs. Every other pair j, one job (two job areas, built in the one no job runs from,
+ * before the wait) brings row pairs j+3 and j+4 (one 2-row transfer each, E and O rows
+ * G apart) and sends pairs j-2 and j-1's candidates (collected in one of two L1 sections,
+ * the transfer re-addressed and its X_COUNT set: no bvb_dma_prepare per job), after waiting
+ * for the job before (row pairs j+1, j+2): each job has two pairs' scans to run under, which
+ * evens out pairs that outrun the bus (the map's flat parts) and pairs the bus outruns (one
+ * job a pair: 731,486 at 320x240; a third band ahead with one job a pair saved nothing). The
+ * first job brings row pairs 0 to 2 while the core waits; an odd last row is scanned in
+ * SDRAM. Anything else (the map in L1, the scratch or cand where DMA does not reach, maps
+ * narrower than 8 or lower than 4, a transfer DMA refuses) takes bvb_harris_nms_asm as it is.
+ * Coherence as bvb/dma.h: on the chip with the data cache on, cand's lines would be
+ * invalidated before the candidates' transfers write it.
+ * The driver is once-per-call code and runs from SDRAM (.text) through the instruction cache,
+ * the scan too (its 700 bytes hit in the cache; L1 instruction SRAM is full), padded to 8 KB
+ * so that the code linked after it keeps its cache sets.
+ *
+ * Measured (bfbench bench, the integer texture's response, threshold 1% of the peak; map and
+ * cand in SDRAM, scratch in L1 bank B; modelled cycles, then the simulator's own count):
+ *   160x120     189,788   9.88 per pixel (bound 8: 1.24x)   sim   172,816
+ *   320x240     693,069   9.02           (1.13x)            sim   650,748
+ *   (640x480: the scratch, 42 KB, does not fit L1 bank B's arena: bvb_harris_nms_asm on the
+ *   map in SDRAM, 5,477,247.) Before: bvb_harris_nms_asm on the map in SDRAM through the data
+ *   cache, 400,418 / 1,516,068 (its line fills 800,275 of the 320x240 count). C: 539,223 /
+ *   2,115,219.
+ * Bound: the map's 4 bytes per pixel over the bus at 0.5 byte per core cycle, 8 per pixel
+ * (614,400 at 320x240; the scan's compute bound is 1). Where the rest of 320x240 goes: the
+ * bus also carries the candidates (2,083, 16.7 KB: some 33,000 cycles) and the jobs' start-up
+ * and descriptors (60 jobs of 3 transfers, some 200 cycles each); the first three row pairs
+ * (15,400 cycles) come in before anything is computed; the scan itself is about as long as
+ * the bus's time (the block
+ * loop 567,600 cycles: 5 issues a block, 8 more for the below-threshold jump, some 40 for an
+ * above-threshold block's winner and its 8 neighbours, 8,230 of 18,921), so that the pairs
+ * the bus waits for are not all hidden; the core waits 35,700 cycles in bvb_dma_wait in all.
+ * Scratch: BVB_HARRIS_NMS_STREAM_SCRATCH_BYTES, 23.0 KB at 320 wide. */
+#define S_RESP   -32   /* resp */
+#define S_H      -36   /* height */
+#define S_RB     -40   /* bytes per row, 4 width */
+#define S_SSTR   -44   /* stride in bytes */
+#define S_E      -48   /* region E (even rows), slot s at E + s RB */
+#define S_O      -52   /* region O (odd rows) */
+#define S_JOB    -56   /* job area 0 (area 1 follows, 128 bytes on) */
+#define S_SRC    -60   /* the next band to bring, in SDRAM */
+#define S_BSLOT  -64   /* its slot offset, s RB */
+#define S_BLEFT  -68   /* bands left to bring */
+#define S_PSLOT  -72   /* the slot offset of the current pair's upper row */
+#define S_SECT   -76   /* bytes per candidate section */
+#define S_SEC    -80   /* the section the last pair's candidates went to */
+#define S_PREVN  -84   /* ... and their number */
+#define S_CPOS   -88   /* where in cand the next section goes */
+#define S_AREA   -92   /* the job area the next job is built in (0, 1) */
+#define S_CKEY   -100  /* per area, the slot prepared for candidates (-1: none) */
+#define S_CUR    -104  /* the area being built */
+#define S_NSLOT  -108  /* its slots */
+#define S_KU     -112  /* key - (the winner - 4) / 4 in the upper row */
+#define S_KL     -116  /* ... in the lower row */
+#define S_RING   -120  /* bytes of a ring region, 5 RB */
+#define S_J      -124  /* the pair */
+#define S_X      -148  /* struct bvb_dma_xfer */
+#define S_SIZE   148
+/* bvb/dma.h's descriptor layout: X_COUNT is halfword 3 of each 7-halfword descriptor, the
+ * destination's descriptors BVB_DMA_MAX_XFERS * 14 bytes after the source's. */
+#define S_DS_XC  6
+#define S_DST_SLOTS (BVB_DMA_MAX_XFERS * 14)
+
+	.text
+	.align 4
+	.global _bvb_harris_nms_stream_asm
+	.type _bvb_harris_nms_stream_asm, STT_FUNC
+_bvb_harris_nms_stream_asm:
+	[--sp] = (r7:4, p5:3);
+	link S_SIZE;
+	[fp + C_W] = r1;
+	[fp + S_RESP] = r0;
+	[fp + S_H] = r2;
+	r4 = r1 << 2;
+	[fp + S_RB] = r4;
+	r3 = 8;
+	cc = r1 < r3;
+	if cc jump .Ls_direct;
+	r3 = 4;
+	cc = r2 < r3;
+	if cc jump .Ls_direct;
+	/* the map in SDRAM, all of it where DMA reaches */
+	r3.l = 0;
+	r3.h = 0x0200;
+	cc = r0 < r3 (iu);
+	if !cc jump .Ls_direct;
+	r5 = [fp + C_ARG_STRIDE];
+	r5 <<= 2;
+	[fp + S_SSTR] = r5;
+	r1 = r2;
+	r1 += -1;
+	r1 *= r5;
+	r1 = r1 + r4;
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ls_direct;
+	/* cand where DMA reaches: its capacity, ((w - 1) / 2) ((h - 1) / 2) pairs */
+	r0 = [fp + C_W];
+	r0 += -1;
+	r0 >>= 1;
+	r1 = [fp + S_H];
+	r1 += -1;
+	r1 >>= 1;
+	r1 *= r0;
+	r1 <<= 3;
+	r0 = [fp + C_ARG_CAND];
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ls_direct;
+	/* the scratch in L1 data SRAM DMA reaches */
+	r0 = [fp + C_ARG_SCRATCH];
+	r3.l = 0;
+	r3.h = 0xff80;
+	cc = r0 < r3 (iu);
+	if cc jump .Ls_direct;
+	r3 = [fp + C_W];
+	r3 += -1;
+	r3 >>= 1;
+	r3 <<= 3;
+	r3 += 8;                /* the waiting list, BVB_HARRIS_NMS_SCRATCH_BYTES */
+	r2 = r3;
+	r2 += 8;
+	r2 <<= 1;
+	[fp + S_SECT] = r2;     /* two pairs' candidates, at most (w - 2) / 2 + 2 each */
+	r1 = [fp + C_W];
+	r2 = 40;
+	r1 *= r2;               /* the ten ring rows */
+	r2 = r3 << 2;
+	r2 = r2 + r3;
+	r1 = r1 + r2;
+	r2 = 4399 (z);          /* the sections' 32, two jobs (256), the gap to O's boundary (< 4096), a pad (16) */
+	r1 = r1 + r2;
+	r0 = [fp + C_ARG_SCRATCH];
+	[fp + S_JOB] = r3;      /* (the list's size, for a moment) */
+	call _bvb_dma_reachable;
+	cc = r0 == 0;
+	if cc jump .Ls_direct;
+	/* the layout: list, two jobs, two sections, E (five rows), O from the next 4 KB
+	 * boundary after E's end */
+	r0 = [fp + C_ARG_SCRATCH];
+	r3 = [fp + S_JOB];
+	r0 = r0 + r3;
+	[fp + S_JOB] = r0;
+	r1 = 256;
+	r0 = r0 + r1;
+	[fp + S_SEC] = r0;      /* section 0 (section 1 follows) */
+	p5 = r0;
+	r1 = [fp + S_SECT];
+	r1 <<= 1;
+	r0 = r0 + r1;
+	[fp + S_E] = r0;
+	r4 = [fp + S_RB];
+	r1 = r4 << 2;
+	r1 = r1 + r4;
+	[fp + S_RING] = r1;     /* 5 RB */
+	r1 = r0 + r1;           /* E + 5 RB */
+	r2 = 4095;
+	r1 = r1 + r2;
+	r2 = ~r2;
+	r1 = r1 & r2;
+	[fp + S_O] = r1;
+	r1 = r1 - r0;
+	m0 = r1;                /* G = O - E */
+
+	/* job area 0: row pairs 0, 1 and 2 (when the map has them) into slots 0, 1, 2 (rows
+	 * 0, 2, 4 to E, rows 1, 3, 5 to O); area 1's slots 0 and 1 prepared for the row pairs
+	 * that follow */
+	r0 = [fp + S_RESP];
+	[fp + S_X + DMAX_SRC] = r0;
+	r0 = [fp + S_SSTR];
+	[fp + S_X + DMAX_SS] = r0;
+	r0 = [fp + S_E];
+	[fp + S_X + DMAX_DST] = r0;
+	r0 = m0;
+	[fp + S_X + DMAX_DS] = r0;
+	r0 = [fp + S_RB];
+	[fp + S_X + DMAX_W] = r0;
+	r0 = 2;
+	[fp + S_X + DMAX_ROWS] = r0;
+	r0 = 128;
+	r1 = 0;
+	call .Ls_prep;
+	r0 = 128;
+	r1 = 1;
+	call .Ls_prep;
+	r0 = 0;
+	r1 = 0;
+	call .Ls_prep;
+	call .Ls_next_rp;
+	r0 = 0;
+	r1 = 1;
+	call .Ls_prep;
+	r1 = 2;
+	r0 = [fp + S_H];
+	r2 = 6;
+	cc = r0 < r2;
+	if cc jump 1f;          /* h < 6: row pairs 0 and 1 are all */
+	call .Ls_next_rp;
+	r0 = 0;
+	r1 = 2;
+	call .Ls_prep;
+	r1 = 3;
+1:	r0 = [fp + S_JOB];
+	call _bvb_dma_start;
+
+	/* the scan's state, as bvb_harris_nms_asm's */
+	r2 = [fp + S_H];
+	r2 += -2;
+	r3 = 1;
+	r0 = r2 & r3;
+	[fp + C_ODDH] = r0;
+	r2 >>= 1;
+	[fp + C_PAIRS] = r2;    /* >= 1 */
+	r2 += -2;
+	r0 = 0;
+	r2 = max (r2, r0);
+	[fp + S_BLEFT] = r2;    /* row pairs 3 .. pairs */
+	r0 = 1;
+	r0 <<= 16;
+	r0 += 1;
+	[fp + C_KEY] = r0;
+	r1 = [fp + C_W];
+	r1 += -2;
+	r0 = r1 & r3;
+	[fp + C_ODDW] = r0;
+	r1 >>= 1;
+	[fp + C_NB] = r1;
+	r0 = [fp + S_RESP];
+	r1 = [fp + S_SSTR];
+	r2 = r1 << 1;
+	r0 = r0 + r2;
+	r1 <<= 2;
+	r0 = r0 + r1;
+	[fp + S_SRC] = r0;      /* row pair 3: rows 6 and 7 */
+	r0 = [fp + S_RB];
+	r1 = r0 << 1;
+	r0 = r0 + r1;
+	[fp + S_BSLOT] = r0;
+	r0 = 0;
+	[fp + S_PSLOT] = r0;
+	[fp + S_PREVN] = r0;
+	[fp + S_J] = r0;
+	r0 = [fp + C_ARG_CAND];
+	[fp + S_CPOS] = r0;
+	r0 = 1;
+	[fp + S_AREA] = r0;
+	r0 = -1;
+	[fp + S_CKEY] = r0;
+	[fp + S_CKEY + 4] = r0;
+	r7 = [fp + C_ARG_THR];
+	m1 = -4;
+	m2 = -16;
+
+.Ls_pair:
+	/* every other pair (j even), the next job, built in the area no job runs from: the row
+	 * pairs j+3 and j+4, the candidates of pairs j-2 and j-1; then the wait for the last job
+	 * (row pairs j+1 and j+2), its start. Each job has two pairs' scans to run under. */
+	r0 = [fp + S_J];
+	cc = bittst (r0, 0);
+	if cc jump .Ls_scan;
+	r0 = p5;
+	r1 = [fp + S_SEC];
+	r0 = r0 - r1;
+	r0 >>= 3;
+	[fp + S_PREVN] = r0;
+	r0 = [fp + S_AREA];
+	r1 = r0 << 7;
+	r2 = [fp + S_JOB];
+	r1 = r1 + r2;
+	[fp + S_CUR] = r1;
+	r0 = 0;
+	[fp + S_NSLOT] = r0;
+	call .Ls_band;
+	call .Ls_band;
+	r0 = [fp + S_PREVN];
+	cc = r0 == 0;
+	if cc jump .Ls_run;
+	call .Ls_cand_slot;
+.Ls_run:
+	call _bvb_dma_wait;     /* row pairs up to j+2 are in */
+	r1 = [fp + S_NSLOT];
+	cc = r1 == 0;
+	if cc jump 1f;
+	r0 = [fp + S_CUR];
+	call _bvb_dma_start;
+1:	r0 = [fp + S_AREA];
+	r1 = 1;
+	r0 = r0 ^ r1;
+	[fp + S_AREA] = r0;
+	/* pairs j and j+1's candidates into the other section than the last two pairs' */
+	r0 = [fp + S_JOB];
+	r1 = 256;
+	r0 = r0 + r1;           /* section 0 */
+	r1 = [fp + S_AREA];     /* (j / 2) & 1 now */
+	cc = r1 == 0;
+	r2 = [fp + S_SECT];
+	r1 = 0;
+	if cc r2 = r1;
+	r0 = r0 + r2;
+	[fp + S_SEC] = r0;
+	p5 = r0;
+.Ls_scan:
+	/* upper row 2j+1 in O at slot j % 5, lower row 2j+2 in E at slot (j+1) % 5 */
+	r0 = [fp + S_PSLOT];
+	r1 = [fp + S_O];
+	r1 = r1 + r0;
+	r1 += 4;
+	b0 = r1;
+	r2 = [fp + S_RB];
+	r0 = r0 + r2;
+	r3 = [fp + S_RING];
+	cc = r0 == r3;
+	r3 = 0;
+	if cc r0 = r3;
+	[fp + S_PSLOT] = r0;
+	r2 = [fp + S_E];
+	r2 = r2 + r0;
+	r2 += 4;
+	r2 = r2 - r1;
+	m3 = r2;                /* Dp */
+	r3 = [fp + C_KEY];
+	b1 = r3;
+	/* the keys from the winner's address - 4 (P0 in .Ls_found): x = (W - B0) / 4 + 1 */
+	r3 += 1;
+	r0 = r1 >> 2;
+	r0 = r3 - r0;
+	[fp + S_KU] = r0;
+	r1 = r1 + r2;           /* the lower row's B0 */
+	r1 >>= 2;
+	r3 = r3 - r1;
+	r1 = 1;
+	r1 <<= 16;
+	r3 = r3 + r1;
+	[fp + S_KL] = r3;
+	call .Ls_do_pair;
+	r0 = [fp + S_J];
+	r0 += 1;
+	[fp + S_J] = r0;
+	r0 = [fp + C_KEY];
+	r1 = 2;
+	r1 <<= 16;
+	r0 = r0 + r1;
+	[fp + C_KEY] = r0;
+	r0 = [fp + C_PAIRS];
+	r0 += -1;
+	[fp + C_PAIRS] = r0;
+	cc = r0 == 0;
+	if !cc jump .Ls_pair;
+	r0 = p5;
+	r1 = [fp + S_SEC];
+	r0 = r0 - r1;
+	r0 >>= 3;
+	[fp + S_PREVN] = r0;
+
+	/* the last pair's candidates */
+	call _bvb_dma_wait;
+	r0 = [fp + S_PREVN];
+	cc = r0 == 0;
+	if cc jump .Ls_tail;
+	r0 = [fp + S_AREA];
+	r1 = r0 << 7;
+	r2 = [fp + S_JOB];
+	r1 = r1 + r2;
+	[fp + S_CUR] = r1;
+	r0 = 0;
+	[fp + S_NSLOT] = r0;
+	call .Ls_cand_slot;
+	r0 = [fp + S_CUR];
+	r1 = [fp + S_NSLOT];
+	call _bvb_dma_start;
+	call _bvb_dma_wait;
+.Ls_tail:
+	p5 = [fp + S_CPOS];
+	/* an odd last row, y = h - 2, in SDRAM */
+	r0 = [fp + C_ODDH];
+	cc = r0 == 0;
+	if cc jump .Ls_done;
+	r0 = [fp + S_H];
+	r0 += -2;
+	r1 = [fp + S_SSTR];
+	r0 *= r1;
+	r2 = [fp + S_RESP];
+	r0 = r0 + r2;
+	r0 += 4;
+	b0 = r0;
+	b2 = r1;
+	b3 = r1;
+	r1 = [fp + C_KEY];
+	b1 = r1;
+	r1 = [fp + C_W];
+	r1 += -2;
+	p2 = r1;
+	p1 = -4;
+	call .Ls_pix;
+.Ls_done:
+	r0 = [fp + C_ARG_CAND];
+	r1 = p5;
+	r0 = r1 - r0;
+	r0 >>= 3;
+	p0 = [fp + C_ARG_COUNT];
+	[p0] = r0;
+	unlink;
+	(r7:4, p5:3) = [sp++];
+	rts;
+
+.Ls_direct:
+	r0 = [fp + S_RESP];
+	r1 = [fp + C_W];
+	r2 = [fp + S_H];
+	unlink;
+	(r7:4, p5:3) = [sp++];
+	jump.l _bvb_harris_nms_asm;
+
+/* Slot R1 of job area R0 (byte offset 0 or 128) prepared for S_X (the initial jobs); refused:
+ * the direct path. */
+.Ls_prep:
+	[--sp] = rets;
+	r2 = [fp + S_JOB];
+	r0 = r0 + r2;
+	r2 = fp;
+	r3 = S_X (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	rets = [sp++];
+	cc = r0 < 0;
+	if cc jump 1f;
+	rts;
+1:	jump.l .Ls_direct;       /* (its UNLINK drops this call's return) */
+
+/* S_X one row pair (2 rows) further down the map and the ring. */
+.Ls_next_rp:
+	r0 = [fp + S_X + DMAX_SRC];
+	r1 = [fp + S_SSTR];
+	r1 <<= 1;
+	r0 = r0 + r1;
+	[fp + S_X + DMAX_SRC] = r0;
+	r0 = [fp + S_X + DMAX_DST];
+	r1 = [fp + S_RB];
+	r0 = r0 + r1;
+	[fp + S_X + DMAX_DST] = r0;
+	rts;
+
+/* The next row pair to bring, when one is left, as slot S_NSLOT of the area at S_CUR. */
+.Ls_band:
+	r0 = [fp + S_BLEFT];
+	cc = r0 == 0;
+	if cc jump 1f;
+	[--sp] = rets;
+	r0 += -1;
+	[fp + S_BLEFT] = r0;
+	r0 = [fp + S_SRC];
+	[fp + S_X + DMAX_SRC] = r0;
+	r1 = [fp + S_SSTR];
+	r1 <<= 1;
+	r0 = r0 + r1;
+	[fp + S_SRC] = r0;
+	r0 = [fp + S_BSLOT];
+	r1 = [fp + S_E];
+	r1 = r1 + r0;
+	[fp + S_X + DMAX_DST] = r1;
+	r1 = [fp + S_RB];
+	r0 = r0 + r1;
+	r2 = [fp + S_RING];
+	cc = r0 == r2;
+	r2 = 0;
+	if cc r0 = r2;
+	[fp + S_BSLOT] = r0;
+	r0 = [fp + S_CUR];
+	r1 = [fp + S_NSLOT];
+	r2 = fp;
+	r3 = S_X (x);
+	r2 = r2 + r3;
+	call _bvb_dma_move;
+	r1 = [fp + S_NSLOT];
+	r1 += 1;
+	[fp + S_NSLOT] = r1;
+	rets = [sp++];
+1:	rts;
+
+/* The last pair's S_PREVN candidates (section S_SEC) to cand at S_CPOS, as slot S_NSLOT of
+ * the area at S_CUR: re-addressed, with its X_COUNTs set, when that slot of that area is the
+ * one prepared for candidates (1D, 16-bit elements: every address and length is a multiple
+ * of 4), else prepared first. */
+.Ls_cand_slot:
+	[--sp] = rets;
+	r0 = [fp + S_SEC];
+	[fp + S_X + DMAX_SRC] = r0;
+	r0 = [fp + S_CPOS];
+	[fp + S_X + DMAX_DST] = r0;
+	r1 = [fp + S_PREVN];
+	r1 <<= 3;
+	r0 = r0 + r1;
+	[fp + S_CPOS] = r0;
+	r0 = [fp + S_AREA];
+	r0 <<= 2;
+	r1 = fp;
+	r0 = r0 + r1;
+	p2 = r0;                 /* &S_CKEY[area] - S_CKEY */
+	r0 = [p2 + S_CKEY];
+	r1 = [fp + S_NSLOT];
+	cc = r0 == r1;
+	if !cc jump 1f;
+	r0 = [fp + S_CUR];
+	r2 = fp;
+	r3 = S_X (x);
+	r2 = r2 + r3;
+	call _bvb_dma_move;
+	jump 2f;
+1:	r0 = [fp + S_SECT];
+	[fp + S_X + DMAX_W] = r0;
+	[fp + S_X + DMAX_SS] = r0;
+	[fp + S_X + DMAX_DS] = r0;
+	r0 = 1;
+	[fp + S_X + DMAX_ROWS] = r0;
+	r0 = [fp + S_CUR];
+	r1 = [fp + S_NSLOT];
+	r2 = fp;
+	r3 = S_X (x);
+	r2 = r2 + r3;
+	call _bvb_dma_prepare;
+	r1 = [fp + S_AREA];
+	r1 <<= 2;
+	r2 = fp;
+	r1 = r1 + r2;
+	p2 = r1;
+	r1 = [fp + S_NSLOT];
+	cc = r0 < 0;
+	if cc jump 3f;
+	[p2 + S_CKEY] = r1;
+2:	r1 = [fp + S_NSLOT];
+	r0 = r1 << 4;
+	r1 <<= 1;
+	r0 = r0 - r1;           /* 14 k */
+	r1 = [fp + S_CUR];
+	r0 = r0 + r1;
+	p0 = r0;
+	r0 = [fp + S_PREVN];
+	r0 <<= 2;               /* 16-bit elements */
+	w[p0 + S_DS_XC] = r0;
+	w[p0 + (S_DST_SLOTS + S_DS_XC)] = r0;
+	r1 = [fp + S_NSLOT];
+	r1 += 1;
+	[fp + S_NSLOT] = r1;
+	rets = [sp++];
+	rts;
+3:	/* DMA refused it (none should): the core copies the section */
+	r0 = -1;
+	[p2 + S_CKEY] = r0;
+	p0 = [fp + S_X + DMAX_SRC];
+	p1 = [fp + S_X + DMAX_DST];
+	p2 = [fp + S_PREVN];
+	p2 = p2 + p2;
+	lsetup (4f, 5f) lc1 = p2;
+4:	r0 = [p0++];
+5:	[p1++] = r0;
+	rets = [sp++];
+	rts;
+
+/* One row pair from the ring: B0 its upper row (x = 1), B1 that row's key, M3 = Dp, M0 = G. */
+.Ls_do_pair:
+	[--sp] = rets;
+	r0 = b0;
+	r2 = [fp + C_ARG_SCRATCH];
+	p3 = r2;                 /* the lower row's candidates wait here */
+	p2 = [fp + C_NB];
+	i0 = r0;
+	r1 = m3;
+	r0 = r0 + r1;
+	i1 = r0;
+	mnop || r0 = [i0++] || r2 = [i1++];
+	mnop || r1 = [i0++] || r3 = [i1++];
+	r4 = max (r0, r2) || r0 = [i0++] || r2 = [i1++];
+	r5 = max (r1, r3) || r1 = [i0++] || r3 = [i1++];
+	lsetup (.Ls_b_s, .Ls_b_e) lc0 = p2;
+.Ls_b_s: r4 = max (r4, r5);
+	cc = r4 <= r7;
+	if cc jump .Ls_back;     /* below the threshold: the jump costs 9, a slow path entered by one 14 */
+	/* above the threshold: bvb_harris_nms_asm's .Lc_slow with the ring's distances; the row
+	 * above an upper winner is G before it and the row below Dp after it; above a lower
+	 * winner Dp before, below G after */
+	i0 += m2;
+	i1 += m2;
+	mnop || r0 = [i0++] || r2 = [i1++];     /* a, c */
+	mnop || r1 = [i0++] || r3 = [i1++];     /* b, d */
+	r4 = 0;
+	r5 = 4;
+	cc = r0 < r1;
+	if cc r0 = r1;
+	if cc r4 = r5;
+	r5 = m3;
+	r1 = r5;
+	r1 += 4;
+	cc = r2 < r3;
+	if cc r2 = r3;
+	if cc r5 = r1;
+	r1 = m0;
+	r3 = m3;
+	cc = r0 < r2;
+	if cc r0 = r2;
+	if cc r4 = r5;                           /* R0 its value, R4 its offset from the block */
+	r5 = r1;
+	if cc r1 = r3;
+	if cc r3 = r5;                           /* R1 the distance up, R3 down */
+	r2 = i0;
+	r2 += -12;
+	r2 = r2 + r4;                            /* the winner - 4 */
+	r5 = r2 - r1;
+	i2 = r5;                                 /* the row above, from the winner's left */
+	p0 = r2;
+	r5 = r2 + r3;
+	i3 = r5;                                 /* the row below */
+	r4 = r0;                                 /* the winner's value */
+	mnop || r0 = [i0++] || r2 = [i1++];      /* the next block, as the loop left it, while */
+	mnop || r1 = [i0++] || r3 = [i1++];      /* I2, I3 and P0 become usable */
+	/* the rows above and below share a region: each pairs with a load of the winner's row */
+	mnop || r5 = [i2++] || r7 = [p0];        /* u0, l */
+	r5 = max (r5, r7) || r6 = [i3++] || r7 = [p0 + 8];  /* d0, r */
+	r6 = max (r6, r7) || r7 = [i2++];        /* u1 */
+	r5 = max (r5, r7) || r7 = [i2++];        /* u2 */
+	r5 = max (r5, r7) || r7 = [i3++];        /* d1 */
+	r6 = max (r6, r7) || r7 = [i3++];        /* d2 */
+	r6 = max (r6, r7);
+	r6 += -1;                                /* after the winner: >= is enough */
+	r5 = max (r5, r6) || r7 = [fp + C_ARG_THR];
+	cc = r5 < r4;
+	if cc jump .Ls_found;
+.Ls_back:
+	r4 = max (r0, r2) || r0 = [i0++] || r2 = [i1++];
+.Ls_b_e: r5 = max (r1, r3) || r1 = [i0++] || r3 = [i1++];
+	p1 = -4;
+	r0 = [fp + C_ODDW];
+	cc = r0 == 0;
+	if cc jump 1f;
+	r0 = [fp + C_NB];
+	r0 <<= 3;
+	r1 = b0;
+	r0 = r0 + r1;
+	b2 = m0;
+	b3 = m3;
+	p2 = 1;
+	call .Ls_pix;
+1:	r0 = [fp + C_ARG_SCRATCH];
+	r1 = p3;
+	r1 = r1 - r0;
+	r1 >>= 2;
+	cc = r1 == 0;
+	if cc jump 2f;
+	i2 = r0;
+	p2 = r1;
+	lsetup (3f, 5f) lc1 = p2;
+3:	r0 = [i2++];
+5:	[p5++] = r0;
+2:
+	r0 = [fp + C_ODDW];
+	cc = r0 == 0;
+	if cc jump 4f;
+	r0 = b0;
+	r1 = m3;
+	r0 = r0 + r1;
+	b0 = r0;
+	r1 = b1;
+	r2 = 1;
+	r2 <<= 16;
+	r1 = r1 + r2;
+	b1 = r1;
+	r1 = [fp + C_NB];
+	r1 <<= 3;
+	r0 = r0 + r1;
+	b2 = m3;
+	b3 = m0;
+	p2 = 1;
+	call .Ls_pix;
+4:	rets = [sp++];
+	rts;
+
+/* The winner is a candidate: into the section if it is in the upper row, else to wait. */
+.Ls_found:
+	r5 = p0;
+	r6 = [fp + S_O];
+	cc = r5 < r6 (iu);                       /* the lower row (region E, before O) */
+	r5 >>= 2;
+	if cc jump 1f;
+	r6 = [fp + S_KU];
+	r5 = r5 + r6;
+	[p5++] = r5;
+	[p5++] = r4;
+	jump .Ls_back;
+1:	r6 = [fp + S_KL];
+	r5 = r5 + r6;
+	[p3++] = r5;
+	[p3++] = r4;
+	jump .Ls_back;
+
+/* .Lc_pix with the distance to the row above in B2 and to the row below in B3. */
+.Ls_pix:
+	r1 = b0;
+	r2 = r0 - r1;
+	r2 >>= 2;
+	r1 = b1;
+	r2 = r2 + r1;
+	p4 = r2;
+	r0 += -4;
+	r1 = b2;
+	r2 = r0 - r1;
+	i2 = r2;
+	r1 = b3;
+	r2 = r0 + r1;
+	i3 = r2;
+	p0 = r0;
+	lsetup (.Ls_p_s, .Ls_p_e) lc1 = p2;
+.Ls_p_s: mnop || r0 = [i2++] || r1 = [i3++];
+	r0 = max (r0, r7) || r2 = [i2++] || r3 = [i3++];
+	r0 = max (r0, r2) || r2 = [i2++m1] || r4 = [i3++m1];
+	r0 = max (r0, r2) || r2 = [p0++];
+	r1 = max (r1, r3) || r3 = [p0++];
+	r0 = max (r0, r2) || r2 = [p0++p1];
+	r1 = max (r1, r4);
+	r1 = max (r1, r2);
+	r1 += -1;
+	r0 = max (r0, r1);
+	cc = r0 < r3;
+	if !cc jump .Ls_p_e (bp);
+	r0 = p4;
+	[p5++] = r0;
+	[p5++] = r3;
+.Ls_p_e: p4 += 1;
+	rts;
+	.size _bvb_harris_nms_stream_asm, . - _bvb_harris_nms_stream_asm
+	/* 8 KB of .text in all, so that the C code linked after it keeps its instruction-cache sets
+	 * (4 KB a way) and the data after .text its data-cache sets (8 KB a way) */
+	.skip 8192 - (. - _bvb_harris_nms_stream_asm)

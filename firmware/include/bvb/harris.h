@@ -63,6 +63,11 @@
  *   Returns the number taken. max_corners >= 0, 0 <= min_distance <= 46340. */
 #define BVB_HARRIS_NMS_CAPACITY(width, height) ((((width) - 1) / 2) * (((height) - 1) / 2))
 #define BVB_HARRIS_NMS_SCRATCH_BYTES(width) (8 * (((width) - 1) / 2) + 8)
+/* bvb_harris_nms_stream_asm's scratch: the waiting list, two DMA jobs, two sections of two
+ * pairs' candidates and ten L1 rows in two regions a 4 KB boundary apart
+ * (firmware/asm/harris.S): 23.0 KB at 320 wide. */
+#define BVB_HARRIS_NMS_STREAM_SCRATCH_BYTES(width) \
+  (5 * BVB_HARRIS_NMS_SCRATCH_BYTES(width) + 40 * (width) + 4399)
 
 #ifndef __ASSEMBLER__
 #include <stdint.h>
@@ -80,6 +85,10 @@ int32_t bvb_harris_nms_c(const int32_t *resp, int32_t width, int32_t height, int
                          int32_t threshold, int32_t *cand, int32_t *count, void *scratch);
 int32_t bvb_harris_nms_asm(const int32_t *resp, int32_t width, int32_t height, int32_t stride,
                            int32_t threshold, int32_t *cand, int32_t *count, void *scratch);
+/* The same with the map in SDRAM streamed through an L1 scratch of
+ * BVB_HARRIS_NMS_STREAM_SCRATCH_BYTES(width) (elsewhere it is bvb_harris_nms_asm). */
+int32_t bvb_harris_nms_stream_asm(const int32_t *resp, int32_t width, int32_t height, int32_t stride,
+                                  int32_t threshold, int32_t *cand, int32_t *count, void *scratch);
 
 int32_t bvb_harris_select_c(int32_t *cand, int32_t n, int32_t max_corners, int32_t min_distance,
                             int32_t *corners);
