@@ -1277,8 +1277,7 @@ _bvb_harris_nms_asm:
  * Coherence as bvb/dma.h: on the chip with the data cache on, cand's lines would be
  * invalidated before the candidates' transfers write it.
  * The driver is once-per-call code and runs from SDRAM (.text) through the instruction cache,
- * the scan too (its 700 bytes hit in the cache; L1 instruction SRAM is full), padded to 8 KB
- * so that the code linked after it keeps its cache sets.
+ * the scan too (its 700 bytes hit in the cache; L1 instruction SRAM is full).
  *
  * Measured (bfbench bench, the integer texture's response, threshold 1% of the peak; map and
  * cand in SDRAM, scratch in L1 bank B; modelled cycles, then the simulator's own count):
@@ -1993,6 +1992,3 @@ _bvb_harris_nms_stream_asm:
 .Ls_p_e: p4 += 1;
 	rts;
 	.size _bvb_harris_nms_stream_asm, . - _bvb_harris_nms_stream_asm
-	/* 8 KB of .text in all, so that the C code linked after it keeps its instruction-cache sets
-	 * (4 KB a way) and the data after .text its data-cache sets (8 KB a way) */
-	.skip 8192 - (. - _bvb_harris_nms_stream_asm)
