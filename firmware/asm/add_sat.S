@@ -14,34 +14,38 @@
  * 130,024 (6.77 per pixel), 320x240 487,294 (6.34); the rest over 6.00 is the stream's per-job
  * cost and gaps, the last band's compute after its rows arrive, and band 0's start. Before
  * (frames through the write-back data cache): 333,740 (17.4) / 1,277,004 (16.6). */
+#include "bvb/asm.h"
 #include "bvb/stream.h"
 
-	.section .l1.text, "ax"
-	.align 4
-	.global _bvb_add_sat_u8_asm
-	.type _bvb_add_sat_u8_asm, STT_FUNC
-_bvb_add_sat_u8_asm:
+/* bvb_add_sat_u8_asm(a, b, dst, width, height, src_stride, dst_stride, scratch): a, b, dst in
+ * R0-R2, the rest on the stack, named here for after the prologue's 16 bytes. */
+#define PUSHED 16			/* RETS, and 12 bytes of outgoing argument space */
+#define ARG_WIDTH BVB_ARG(4, PUSHED)
+#define ARG_HEIGHT BVB_ARG(5, PUSHED)
+#define ARG_SRC_STRIDE BVB_ARG(6, PUSHED)
+#define ARG_DST_STRIDE BVB_ARG(7, PUSHED)
+#define ARG_SCRATCH BVB_ARG(8, PUSHED)
+
+BVB_FUNC bvb_add_sat_u8_asm
 	[--sp] = rets;
 	sp += -12;		/* the C routines' outgoing argument space */
-	/* [sp + 28] width, [sp + 32] height, [sp + 36] src_stride, [sp + 40] dst_stride,
-	 * [sp + 44] scratch */
-	p0 = [sp + 44];
+	p0 = [sp + ARG_SCRATCH];
 	cc = p0 == 0;
 	if cc jump .Ldirect;
 	/* The stream's three planes (bvb/stream.h), all width bytes a row. */
 	[p0 + ST_SRC0] = r0;
 	[p0 + ST_SRC1] = r1;
 	[p0 + ST_DST] = r2;
-	r3 = [sp + 28];
+	r3 = [sp + ARG_WIDTH];
 	[p0 + ST_SB0] = r3;
 	[p0 + ST_SB1] = r3;
 	[p0 + ST_DB] = r3;
-	r3 = [sp + 36];
+	r3 = [sp + ARG_SRC_STRIDE];
 	[p0 + ST_SS0] = r3;
 	[p0 + ST_SS1] = r3;
-	r3 = [sp + 40];
+	r3 = [sp + ARG_DST_STRIDE];
 	[p0 + ST_DS] = r3;
-	r3 = [sp + 32];
+	r3 = [sp + ARG_HEIGHT];
 	[p0 + ST_ROWS] = r3;
 	r0 = p0;
 	call _bvb_stream_open;
@@ -49,11 +53,11 @@ _bvb_add_sat_u8_asm:
 	if !cc jump .Lrefused;
 	/* Each band, contiguous in L1, is one row of n * width pixels. */
 .Lband:
-	r0 = [sp + 44];
+	r0 = [sp + ARG_SCRATCH];
 	call _bvb_stream_next;
 	cc = r0 == 0;
 	if cc jump .Lret;
-	p0 = [sp + 44];
+	p0 = [sp + ARG_SCRATCH];
 	r2 = [p0 + ST_DB];
 	r2 *= r0;
 	r1 = [p0 + ST_IN0];
@@ -67,7 +71,7 @@ _bvb_add_sat_u8_asm:
 	jump .Lband;
 
 .Lrefused:			/* the frames where they are */
-	p0 = [sp + 44];
+	p0 = [sp + ARG_SCRATCH];
 	r0 = [p0 + ST_SRC0];
 	r1 = [p0 + ST_SRC1];
 	r2 = [p0 + ST_DST];
@@ -75,12 +79,12 @@ _bvb_add_sat_u8_asm:
 	i0 = r0;
 	i1 = r1;
 	i2 = r2;
-	r0 = [sp + 36];		/* src_stride */
+	r0 = [sp + ARG_SRC_STRIDE];
 	m0 = r0;
-	r0 = [sp + 40];		/* dst_stride */
+	r0 = [sp + ARG_DST_STRIDE];
 	m1 = r0;
-	r0 = [sp + 32];		/* height */
-	r2 = [sp + 28];		/* width */
+	r0 = [sp + ARG_HEIGHT];
+	r2 = [sp + ARG_WIDTH];
 	call .Lrows;
 .Lret:
 	sp += 12;
@@ -109,4 +113,4 @@ _bvb_add_sat_u8_asm:
 .Lrow_end:
 	i2 += m1;
 	rts;
-	.size _bvb_add_sat_u8_asm, . - _bvb_add_sat_u8_asm
+BVB_ENDFUNC bvb_add_sat_u8_asm
