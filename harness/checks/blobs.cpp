@@ -18,12 +18,6 @@
 namespace bvb {
 namespace {
 
-template <class T> std::vector<uint8_t> bytes_of(const T &v) {
-  std::vector<uint8_t> b(sizeof v);
-  std::memcpy(b.data(), &v, sizeof v);
-  return b;
-}
-
 // A UYVY frame from packed 4:2:2 bytes (2 * w per row), laid out with `stride` bytes per row and
 // junk in the padding.
 std::vector<uint8_t> with_stride(const std::vector<uint8_t> &packed, int w, int h, int stride, Rng &rng) {

@@ -62,12 +62,6 @@ Gradients random_gradients(int w, int h, int gs, int levels, Rng &rng) {
   return g;
 }
 
-std::vector<uint8_t> bytes_of(const std::vector<int16_t> &v) {
-  std::vector<uint8_t> b(v.size() * 2);
-  std::memcpy(b.data(), v.data(), b.size());
-  return b;
-}
-
 // The firmware gets `stack_cap` stack entries; the host reference always gets a stack that
 // never fills, so a run that overflowed must still give the same edge map.
 CheckCall canny_call(const Gradients &g, int w, int h, int es, int low, int high, int stack_cap,
@@ -78,8 +72,8 @@ CheckCall canny_call(const Gradients &g, int w, int h, int es, int low, int high
   c.pixels = double(w) * h;
   const int gs = g.gs;
   const View gv{2, true, w, h, gs};
-  int igx = c.in("gx", bytes_of(g.gx), gv);
-  int igy = c.in("gy", bytes_of(g.gy), gv);
+  int igx = c.in("gx", as_bytes(g.gx), gv);
+  int igy = c.in("gy", as_bytes(g.gy), gv);
   int ie = c.out("edges", size_t(es) * (h - 1) + w, View{1, false, w, h, es});
   int im = c.scratch("mag_rows", size_t(BVB_CANNY_MAG_ROWS(w)) * 2);
   int is = c.scratch("stack", size_t(std::max(stack_cap, 1)) * 4);

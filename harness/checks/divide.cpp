@@ -14,21 +14,14 @@
 namespace bvb {
 namespace {
 
-std::vector<uint8_t> words(const std::vector<uint32_t> &v) {
-  std::vector<uint8_t> b(v.size() * 4);
-  for (size_t i = 0; i < v.size(); ++i)
-    for (int k = 0; k < 4; ++k) b[4 * i + k] = uint8_t(v[i] >> (8 * k));
-  return b;
-}
-
 CheckCall divide_call(const std::vector<uint32_t> &num, const std::vector<uint32_t> &den, const std::string &name) {
   CheckCall c;
   c.kernel = "divide";
   c.case_name = name;
   const int n = int(num.size());
   c.pixels = n;
-  int in = c.in("num", words(num), View{4, false, n, 1, n});
-  int id = c.in("den", words(den), View{4, false, n, 1, n});
+  int in = c.in("num", as_bytes(num), View{4, false, n, 1, n});
+  int id = c.in("den", as_bytes(den), View{4, false, n, 1, n});
   int io = c.out("out", size_t(6) * std::max(n, 1) * 4, View{4, false, 6, std::max(n, 1), 6});
   c.buf(in).buf(id).buf(io).word(n);
   c.host = [=](HostBuffers &m) { bvb_divide_c(m.u32(in), m.u32(id), m.u32(io), n); };

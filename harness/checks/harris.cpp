@@ -19,12 +19,6 @@
 namespace bvb {
 namespace {
 
-std::vector<uint8_t> as_bytes(const std::vector<int32_t> &v) {
-  std::vector<uint8_t> b(v.size() * 4);
-  std::memcpy(b.data(), v.data(), b.size());
-  return b;
-}
-
 CheckCall response_call(int w, int h, int sstride, int dstride, std::vector<uint8_t> src,
                         const std::string &case_name) {
   CheckCall c;

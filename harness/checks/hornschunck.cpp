@@ -176,11 +176,6 @@ int32_t pick_alpha2(Rng &rng) {
   }
 }
 
-std::vector<uint8_t> as_bytes(const std::vector<int16_t> &v) {
-  std::vector<uint8_t> b(v.size() * 2);
-  std::memcpy(b.data(), v.data(), b.size());
-  return b;
-}
 
 // Coefficients for the iterate checks: the C prepare on a frame pair (what the kernel really
 // sees), or any int16 values (the iteration's arithmetic is defined for all of them).

@@ -24,12 +24,6 @@
 namespace bvb {
 namespace {
 
-template <class T> std::vector<uint8_t> as_bytes(const std::vector<T> &v) {
-  std::vector<uint8_t> b(v.size() * sizeof(T));
-  std::memcpy(b.data(), v.data(), b.size());
-  return b;
-}
-
 int max_levels(int w, int h) {
   int l = 1;
   while (l < BVB_LK_MAX_LEVELS && (w >> l) >= 1 && (h >> l) >= 1) ++l;

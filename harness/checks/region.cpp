@@ -17,12 +17,6 @@
 namespace bvb {
 namespace {
 
-template <class T> std::vector<uint8_t> bytes_of(const T &v) {
-  std::vector<uint8_t> b(sizeof v);
-  std::memcpy(b.data(), &v, sizeof v);
-  return b;
-}
-
 // Skews each buffer as its element type allows, then places them all together.
 void place_buffers(Checker &ck, CheckCall &c, Rng &rng) {
   for (auto &b : c.bufs) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <stdexcept>
@@ -44,6 +45,21 @@ class Rng {
  private:
   uint64_t s_;
 };
+
+// A vector of values as the bytes a call's buffer holds (the host's order, little-endian as the
+// Blackfin's).
+template <class T> std::vector<uint8_t> as_bytes(const std::vector<T> &v) {
+  std::vector<uint8_t> b(v.size() * sizeof(T));
+  if (!b.empty()) std::memcpy(b.data(), v.data(), b.size());
+  return b;
+}
+
+// One object (a kernel's parameter struct, laid out as the firmware's) as a buffer's bytes.
+template <class T> std::vector<uint8_t> bytes_of(const T &v) {
+  std::vector<uint8_t> b(sizeof v);
+  std::memcpy(b.data(), &v, sizeof v);
+  return b;
+}
 
 // The host reference's view of a call's buffers (the same bytes the firmware gets).
 class HostBuffers {
