@@ -327,7 +327,7 @@ _bvb_scanline_profile_u8_asm:
  * The n mod 4 odd bytes are taken first, one by one (I0 and I1 then step past them by the
  * circular DAG arithmetic, so that no read leaves the profiles' words); SAA does the rest.
  * For n < 4 the SAA part reads a word pair and adds nothing. */
-.macro SAD_AT id
+.macro SAD_AT id, sum
 	r5 = 0;
 	r2 = 3;
 	r2 = r2 & r4;
@@ -363,13 +363,24 @@ _bvb_scanline_profile_u8_asm:
 	if !cc jump .Ls_no4_\id;
 	saa (r1:0, r3:2);
 .Ls_no4_\id:
-	/* The four lanes are unsigned 16-bit sums: add them with the MACs. */
+	LANESUM_\sum
+	r5 = r5 + r0;
+.endm
+
+/* The four SAA lanes into r0. Each lane holds at most n / 4 terms of at most 255: for
+ * n <= 512 that is below 2^15, and the halves added as signed 16-bit values are exact (one
+ * instruction); above, the lanes are unsigned 16-bit sums, added with the MACs. */
+.macro LANESUM_fast
+	r0 = a1.l + a1.h, r1 = a0.l + a0.h;
+	r0 = r0 + r1;
+.endm
+
+.macro LANESUM_mac
 	r1 = a1, r0 = a0 (fu);
 	r2 = 1;
 	a1 = r0.h * r2.l, a0 = r0.l * r2.l (fu);
 	a1 += r1.h * r2.l, a0 += r1.l * r2.l (fu);
 	r0 = (a0 += a1);
-	r5 = r5 + r0;
 .endm
 
 /* Keep shift t if S * n_best < S_best * n (f(t) below the best so far). r5 = S, r4 = n,
@@ -397,7 +408,7 @@ _bvb_scanline_profile_u8_asm:
 .endm
 
 /* Shifts -k and +k (k = p4 after the increments). */
-.macro KBODY id
+.macro KBODY id, sum
 	p4 += 1;
 	p5 += -1;
 	r4 += -1;			/* n = w - k for both shifts */
@@ -408,16 +419,41 @@ _bvb_scanline_profile_u8_asm:
 	i0 = m0;
 	i0 += m2;
 	i1 = m1;
-	SAD_AT n\id
+	SAD_AT n\id, \sum
 	[i2--] = r5;
 	KEEP_IF_BETTER p5, n\id
 	/* t = +k: p1[0..w-k) against p2[k..w). */
 	i0 = m0;
 	i1 = m1;
 	i1 += m2;
-	SAD_AT p\id
+	SAD_AT p\id, \sum
 	[i3++] = r5;
 	KEEP_IF_BETTER p4, p\id
+.endm
+
+/* The search: t = 0, then k = 1..T (shifts -k and +k); sum = the lane sum's kind. */
+.macro SEARCH id, sum
+	r4 = m2;			/* n = w - k, k = 0 */
+	r0 = r4 >> 3;
+	p2 = r0;
+	i0 = m0;
+	i1 = m1;
+	SAD_AT z\id, \sum
+	r6 = r5;
+	r7 = r4;
+	p3 = 0;
+	[i2--] = r5;
+	i3 += 4;
+	cc = p5 == 0;
+	if cc jump .Lsh_done_\id;
+	lsetup (.Lsh_k_\id, .Lsh_k_end_\id) lc1 = p5;
+	p4 = 0;				/* k */
+	p5 = 0;				/* -k */
+.Lsh_k_\id:
+	KBODY k\id, \sum
+.Lsh_k_end_\id:
+	nop;
+.Lsh_done_\id:
 .endm
 
 /* void bvb_scanline_shift_u8_asm(p1, p2, w, rho, result, curve) */
@@ -503,27 +539,12 @@ _bvb_scanline_shift_u8_asm:
 .Lsh_zero:
 	r0 = m3;
 	p5 = r0;			/* T: the k loop's count (m3 is SAD_AT's) */
-	/* t = 0 is the first best. */
-	r4 = m2;			/* n = w - k, k = 0 */
-	r0 = r4 >> 3;
-	p2 = r0;
-	i0 = m0;
-	i1 = m1;
-	SAD_AT z
-	r6 = r5;
-	r7 = r4;
-	p3 = 0;
-	[i2--] = r5;
-	i3 += 4;
-	cc = p5 == 0;
-	if cc jump .Lsh_done;
-	lsetup (.Lsh_k, .Lsh_k_end) lc1 = p5;
-	p4 = 0;				/* k */
-	p5 = 0;				/* -k */
-.Lsh_k:
-	KBODY k
-.Lsh_k_end:
-	nop;
+	/* Windows above 512: the MAC lane sum, in .text (SDRAM through the instruction cache). */
+	r0 = m2;
+	r1 = 512 (z);
+	cc = r0 <= r1;
+	if !cc jump .Lsh_to_big;
+	SEARCH f, fast
 .Lsh_done:
 	r0 = [fp + 48];			/* result */
 	p0 = r0;
@@ -539,6 +560,21 @@ _bvb_scanline_shift_u8_asm:
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;
-	KEEP_BODY p5, nk
-	KEEP_BODY p4, pk
+	KEEP_BODY p5, nkf
+	KEEP_BODY p4, pkf
+.Lsh_to_big:
+	p0.l = .Lsh_big;
+	p0.h = .Lsh_big;
+	jump (p0);
 	.size _bvb_scanline_shift_u8_asm, . - _bvb_scanline_shift_u8_asm
+
+	/* w > 512, rare: out of L1. Back to the common exit through .Lsh_done. */
+	.text
+	.align 4
+.Lsh_big:
+	SEARCH m, mac
+	p0.l = .Lsh_done;
+	p0.h = .Lsh_done;
+	jump (p0);
+	KEEP_BODY p5, nkm
+	KEEP_BODY p4, pkm
