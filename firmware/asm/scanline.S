@@ -431,8 +431,8 @@ _bvb_scanline_profile_u8_asm:
 	KEEP_IF_BETTER p4, p\id
 .endm
 
-/* The search: t = 0, then k = 1..T (shifts -k and +k); sum = the lane sum's kind. */
-.macro SEARCH id, sum
+/* The shift t = 0 (the first best); sum = the lane sum's kind. */
+.macro SEARCH0 id, sum
 	r4 = m2;			/* n = w - k, k = 0 */
 	r0 = r4 >> 3;
 	p2 = r0;
@@ -444,16 +444,6 @@ _bvb_scanline_profile_u8_asm:
 	p3 = 0;
 	[i2--] = r5;
 	i3 += 4;
-	cc = p5 == 0;
-	if cc jump .Lsh_done_\id;
-	lsetup (.Lsh_k_\id, .Lsh_k_end_\id) lc1 = p5;
-	p4 = 0;				/* k */
-	p5 = 0;				/* -k */
-.Lsh_k_\id:
-	KBODY k\id, \sum
-.Lsh_k_end_\id:
-	nop;
-.Lsh_done_\id:
 .endm
 
 /* void bvb_scanline_shift_u8_asm(p1, p2, w, rho, result, curve) */
@@ -538,13 +528,26 @@ _bvb_scanline_shift_u8_asm:
 	i3 = r0;
 .Lsh_zero:
 	r0 = m3;
-	p5 = r0;			/* T: the k loop's count (m3 is SAD_AT's) */
-	/* Windows above 512: the MAC lane sum, in .text (SDRAM through the instruction cache). */
+	p5 = r0;			/* T (m3 is SAD_AT's) */
+	/* Windows above 512: t = 0 and the shifts whose overlap is above 512 take the MAC
+	 * lane sum, in .text (SDRAM through the instruction cache); they come back for the rest. */
 	r0 = m2;
 	r1 = 512 (z);
 	cc = r0 <= r1;
 	if !cc jump .Lsh_to_big;
-	SEARCH f, fast
+	SEARCH0 f, fast
+	p0 = p5;			/* the k loop's count */
+	p4 = 0;				/* k */
+	p5 = 0;				/* -k */
+	/* k from p4 + 1 on, p0 steps, r4 = w - p4, p5 = -p4. */
+.Lsh_kloop:
+	cc = p0 == 0;
+	if cc jump .Lsh_done;
+	lsetup (.Lsh_k, .Lsh_k_end) lc1 = p0;
+.Lsh_k:
+	KBODY kf, fast
+.Lsh_k_end:
+	nop;
 .Lsh_done:
 	r0 = [fp + 48];			/* result */
 	p0 = r0;
@@ -568,13 +571,30 @@ _bvb_scanline_shift_u8_asm:
 	jump (p0);
 	.size _bvb_scanline_shift_u8_asm, . - _bvb_scanline_shift_u8_asm
 
-	/* w > 512, rare: out of L1. Back to the common exit through .Lsh_done. */
+	/* w > 512: t = 0 and k = 1..min(T, w - 512), overlaps above 512, with the MAC lane sum. */
 	.text
 	.align 4
 .Lsh_big:
-	SEARCH m, mac
-	p0.l = .Lsh_done;
-	p0.h = .Lsh_done;
-	jump (p0);
+	SEARCH0 m, mac
+	r1 = p5;			/* T */
+	r0 = m2;
+	r2 = 512 (z);
+	r0 = r0 - r2;
+	r0 = min (r0, r1);		/* at least 1 */
+	r1 = r1 - r0;
+	[--sp] = r1;			/* the steps left for the fast loop */
+	p0 = r0;
+	p4 = 0;
+	p5 = 0;
+	lsetup (.Lsh_km, .Lsh_km_end) lc1 = p0;
+.Lsh_km:
+	KBODY km, mac
+.Lsh_km_end:
+	nop;
+	r0 = [sp++];
+	p0 = r0;
+	p1.l = .Lsh_kloop;
+	p1.h = .Lsh_kloop;
+	jump (p1);
 	KEEP_BODY p5, nkm
 	KEEP_BODY p4, pkm
