@@ -19,7 +19,9 @@
  *   cycle into the accumulators' four 16-bit lanes (two loads per cycle, misalignment of
  *   either profile absorbed through I0 and I1) after the overlap's first n mod 4 bytes have
  *   been taken one by one; a lone last 4-byte chunk gets one more SAA, the lanes are summed
- *   as unsigned halves with the MACs, and S(t) is compared with the best by
+ *   as signed halves in one instruction while n <= 512 (each lane then holds at most 128 terms
+ *   of at most 255, below 2^15) and as unsigned halves with the MACs above (the shifts with
+ *   k < w - 512 of windows above 512, that code in .text), and S(t) is compared with the best by
  *   cross-multiplication (out of line: only when S(t) is below the best S, which with the
  *   overlap never growing outwards is needed for f(t) to be below the best f).
  *   p2's words are first copied onto the stack (L1 bank B; w / 4 words, 2 cycles each) when
@@ -40,7 +42,7 @@
  *     160x120: C 105,375, asm 13,056 (8.1x); 320x240: C 402,634, asm 35,448 (11.4x);
  *     640x480: C 1,573,222, asm 109,192 (14.4x); bound 4,820 / 19,240 / 76,880 (SAA rate);
  *     about 50 cycles a shift go to set-up, the 0..3 odd bytes, the lane sum and the
- *     comparison. (Before the copy of p2; now 12,668 / 34,593 / 107,493.)
+ *     comparison. (Before the copy of p2; now 12,190 / 33,635 / 106,378.)
  * Both kernels read their inputs only within the words that hold them (circular buffers over
  * each row or profile). Working set: the profile's 16-bit column sums (scratch, 1.3 KB at 640
  * wide; L1 on hardware); the shift search: a copy of p2 on the stack (w bytes, rounded to words)
@@ -58,21 +60,26 @@
  *     from the monitor's copy into SDRAM (a camera frame never is), and 173,889 at 320x240,
  *     where two rows a pass fall in the same sets of the 2-way cache and lines were filled
  *     again and again.
- *   shift: 160x120 12,664, 320x240 34,589 (1.80x the bound of 19,240), 640x480 107,489
- *     (1.40x of 76,880); the simulator's own counts are the same but for 4 cycles: no
- *     collisions, no line fills (the profiles are in the data cache), 7 address-register
- *     cycles. Before the copy of p2: 18,050 and 55,042, of which 19,602 were sub-bank
- *     collisions of the SAA's two loads. Where the rest goes at 320x240 (bfbench profile):
- *     the SAA loops take 18,880 of the bound's 19,240; each shift costs some 47 cycles more:
- *     the n mod 4 odd bytes one by one (5 cycles a byte and 7 to set up, about 11 a shift on
- *     average), the last lone SAA and its branch (about 5), the lane sum (6), pointers, loop
- *     counts and the SAA loop's set-up (about 12), the branch over the odd bytes (about 2
- *     on average, mispredicted 1 time in 4), the curve store and the test against the best
- *     (2), of which 1,976 are branch cycles. 160 k-steps of two shifts: 95 cycles a step
- *     over their SAA loops. Toward the bound: a zero-padded copy of p2 turns the odd bytes
- *     into one more SAA and a running correction of p1's bytes, and the lanes' sum into one
- *     instruction (R = A1.L + A1.H, R = A0.L + A0.H, exact while w <= 512); L1 code memory
- *     (48 KB, nearly full) is the constraint on a second path beside the present one. */
+ *   shift: 160x120 12,186 (2.53x the bound of 4,820), 320x240 33,631 (1.75x of 19,240),
+ *     640x480 107,494 (1.40x of 76,880); --timing none 12,190, 33,635, 106,378: no
+ *     collisions, no line fills (the profiles are in the data cache), at 640 some 1,100
+ *     cycles of instruction-cache fills for the MAC-sum loop in .text (k < w - 512). Before
+ *     the one-instruction lane sum: 12,664, 34,589, 107,489; before the copy of p2: 18,050
+ *     and 55,042, of which 19,602 were sub-bank collisions of the SAA's two loads. Where the
+ *     rest goes at 320x240 (bfbench profile): the SAA loops take 18,880 of the bound's
+ *     19,240; each of the 321 shifts costs some 46 cycles more: the n mod 4 odd bytes one by
+ *     one (5 cycles a byte and 7 to set up, about 11 a shift on average), the last lone SAA
+ *     and its branch (about 5: taken one time in 2, 8 cycles when taken), the lane sum (3),
+ *     pointers, loop counts and the SAA loop's set-up (about 12), the branch over the odd
+ *     bytes (about 3 on average, taken 1 time in 4), the curve store and the test against
+ *     the best (2); 1,976 cycles in all are branch cycles. Toward the bound: a zero-padded
+ *     copy of p2 (zeros on both sides) and a running correction of p1's bytes (the bytes the
+ *     rounded-up overlap takes in against zeros, one byte more per k, reset every 8 k) make
+ *     every shift a whole number of SAA pairs with no odd bytes, no lone SAA and no branch
+ *     but the best test: about 12 cycles a shift, 1.2x; the shifts with k < 8 then read p1
+ *     past its ends and need p1 padded too, a copy that must sit in another L1 sub-bank than
+ *     p2's. L1 code memory (48 KB, nearly full) is the constraint on a second path beside
+ *     the present one. */
 
 	.section .rodata
 	.align 4
