@@ -12,6 +12,7 @@
  * bvb_dma_prepare, bvb_dma_start, the poll that sees DMA_DONE: 17,827 cycles for the whole
  * call in the simulator's own count, where the transfers take almost no time), during which
  * the bus rests (this copy has nothing to overlap them with; the kernels do). */
+#include "bvb/asm.h"
 #include "bvb/dma.h"
 
 #define K_SRC 0
@@ -25,29 +26,30 @@
 #define K_P 32			/* band rows' stride in L1: width rounded up to 4 */
 #define K_X 36			/* a struct bvb_dma_xfer, 24 bytes */
 #define KLOCALS 60
-#define KARGS (KLOCALS + 32)	/* [sp + KARGS + 12]: the 4th argument */
+#define PUSHED (KLOCALS + 32)	/* R4-R7, P3-P5, RETS and the locals */
+#define ARG_DST_STRIDE BVB_ARG(4, PUSHED)
+#define ARG_WIDTH BVB_ARG(5, PUSHED)
+#define ARG_HEIGHT BVB_ARG(6, PUSHED)
+#define ARG_BAND BVB_ARG(7, PUSHED)
+#define ARG_SCRATCH BVB_ARG(8, PUSHED)
 
-	.section .l1.text, "ax"
-	.align 4
-	.global _bvb_dma_copy_u8_asm
-	.type _bvb_dma_copy_u8_asm, STT_FUNC
-_bvb_dma_copy_u8_asm:
+BVB_FUNC bvb_dma_copy_u8_asm
 	[--sp] = (r7:4, p5:3);
 	[--sp] = rets;
 	sp += -KLOCALS;
 	[sp + K_SRC] = r0;
 	[sp + K_SS] = r1;
 	[sp + K_DST] = r2;
-	r0 = [sp + KARGS + 12];
+	r0 = [sp + ARG_DST_STRIDE];
 	[sp + K_DS] = r0;
-	r0 = [sp + KARGS + 16];
+	r0 = [sp + ARG_WIDTH];
 	[sp + K_W] = r0;
 	r3 = r0;
-	r0 = [sp + KARGS + 20];
+	r0 = [sp + ARG_HEIGHT];
 	[sp + K_H] = r0;
-	r0 = [sp + KARGS + 24];
+	r0 = [sp + ARG_BAND];
 	[sp + K_BAND] = r0;
-	r0 = [sp + KARGS + 28];
+	r0 = [sp + ARG_SCRATCH];
 	[sp + K_SCR] = r0;
 	r3 += 3;
 	r0 = -4;
@@ -232,4 +234,4 @@ _bvb_dma_copy_u8_asm:
 	call _bvb_dma_prepare;
 	rets = [sp++];
 	rts;
-	.size _bvb_dma_copy_u8_asm, . - _bvb_dma_copy_u8_asm
+BVB_ENDFUNC bvb_dma_copy_u8_asm

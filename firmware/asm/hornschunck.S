@@ -134,6 +134,7 @@
  *   inside their width but for one word after the row above each output row (row 0 for row 0;
  *   the iteration's load ahead, unused; the next row of uv_in follows it).
  */
+#include "bvb/asm.h"
 
 /* ---------------------------------------------------------------------------------------------
  * bvb_hs_iterate_asm(coef, uv_in, in_stride, uv_out, out_stride, width, height, flow_scratch,
@@ -257,10 +258,7 @@
 	rts;
 
 
-	.align 4
-	.global _bvb_hs_iterate_asm
-	.type _bvb_hs_iterate_asm, STT_FUNC
-_bvb_hs_iterate_asm:
+BVB_FUNC bvb_hs_iterate_asm
 	/* With the two scratches (arguments 8 and 9), one iteration of bvb_hs_iterate_n_asm: its
 	 * rows by DMA through them where it reaches. Arguments 4-9 at SP + 12..32 on entry. */
 	r3 = [sp + 28];
@@ -350,7 +348,7 @@ _bvb_hs_iterate_asm:
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;
-	.size _bvb_hs_iterate_asm, . - _bvb_hs_iterate_asm
+BVB_ENDFUNC bvb_hs_iterate_asm
 
 #include "bvb/dma.h"
 
@@ -405,10 +403,7 @@ _bvb_hs_iterate_asm:
 #define N_FRAME 340   /* locals at FP-328..-1, the C calls' 12 bytes of arguments below */
 
 
-	.align 4
-	.global _bvb_hs_iterate_n_asm
-	.type _bvb_hs_iterate_n_asm, STT_FUNC
-_bvb_hs_iterate_n_asm:
+BVB_FUNC bvb_hs_iterate_n_asm
 	[--sp] = (r7:4, p5:3);
 	link N_FRAME;
 	[fp + N_COEF] = r0;
@@ -894,7 +889,7 @@ _bvb_hs_iterate_n_asm:
 	if cc jump .Ln_job_core;
 	rets = [sp++];
 	rts;
-	.size _bvb_hs_iterate_n_asm, . - _bvb_hs_iterate_n_asm
+BVB_ENDFUNC bvb_hs_iterate_n_asm
 
 /* ---------------------------------------------------------------------------------------------
  * bvb_hs_prepare_asm(i1, i2, width, height, stride, alpha2_q4, coef)
@@ -1280,11 +1275,7 @@ _bvb_hs_iterate_n_asm:
 
 #include "bvb/stream.h"
 
-	.section .l1.text, "ax"
-	.align 4
-	.global _bvb_hs_prepare_asm
-	.type _bvb_hs_prepare_asm, STT_FUNC
-_bvb_hs_prepare_asm:
+BVB_FUNC bvb_hs_prepare_asm
 	[--sp] = (r7:4, p5:3);
 	link HS_FRAME;
 	/* Arguments 4-8 at FP + 8 (RETS, FP) + 28 (saves) + 12. */
@@ -1686,7 +1677,7 @@ _bvb_hs_prepare_asm:
 .Lps_ret:
 	rets = [sp++];
 	rts;
-	.size _bvb_hs_prepare_asm, . - _bvb_hs_prepare_asm
+BVB_ENDFUNC bvb_hs_prepare_asm
 
 /* ---------------------------------------------------------------------------------------------
  * bvb_hornschunck_asm(i1, i2, width, height, stride, alpha2_q4, iterations, uv_out, out_stride,
@@ -1695,11 +1686,7 @@ _bvb_hs_prepare_asm:
  * row after the coefficients in scratch, read with stride 0 as every row of the start field.
  * Once a call, so it runs from SDRAM (cached): L1 instruction memory is for the loops.
  * --------------------------------------------------------------------------------------------- */
-	.text
-	.align 4
-	.global _bvb_hornschunck_asm
-	.type _bvb_hornschunck_asm, STT_FUNC
-_bvb_hornschunck_asm:
+BVB_FUNC bvb_hornschunck_asm, .text
 	[--sp] = (r7:4, p5:3);
 	link 40;                         /* the outgoing arguments 4-10 at SP + 12..39 */
 	/* Arguments 4-12 at FP + 48: height, stride, alpha2_q4, iterations, uv_out, out_stride,
@@ -1801,4 +1788,4 @@ _bvb_hornschunck_asm:
 	unlink;
 	(r7:4, p5:3) = [sp++];
 	rts;
-	.size _bvb_hornschunck_asm, . - _bvb_hornschunck_asm
+BVB_ENDFUNC bvb_hornschunck_asm

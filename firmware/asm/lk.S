@@ -60,6 +60,7 @@
  * at 160x120 before, where its fast buffer put the scratch too near a boundary for the layout
  * to split at it).
  * Working set: the window rows of two levels' images and under 4 KB of scratch (L1 on hardware). */
+#include "bvb/asm.h"
 #include "bvb/lk.h"
 
 	.section .l1.text, "ax"
@@ -67,9 +68,7 @@
 
 /* ---- bvb_lk_track_asm: the driver with the assembly steps ---- */
 
-	.global _bvb_lk_track_asm
-	.type _bvb_lk_track_asm, STT_FUNC
-_bvb_lk_track_asm:
+BVB_FUNC bvb_lk_track_asm
 	/* bvb_lk_track_run takes the same 11 arguments and the step table: the caller's stack
 	 * arguments 4..11 are copied below a new frame, the table appended. */
 	link 48;
@@ -97,17 +96,13 @@ _bvb_lk_track_asm:
 	call _bvb_lk_track_run;
 	unlink;
 	rts;
-	.size _bvb_lk_track_asm, . - _bvb_lk_track_asm
+BVB_ENDFUNC bvb_lk_track_asm
 
 /* ---- bvb_lk_pyramid_streamed_asm: the stream's driver (firmware/c/lk.c) with the level
  * routine below. The driver is compiled C, whose convention leaves a hardware loop counting
  * when it leaves one early; this entry clears both counters so that no caller's loop end
  * fires on a stale count. Once per call: in SDRAM. */
-	.section .text
-	.align 4
-	.global _bvb_lk_pyramid_streamed_asm
-	.type _bvb_lk_pyramid_streamed_asm, STT_FUNC
-_bvb_lk_pyramid_streamed_asm:
+BVB_FUNC bvb_lk_pyramid_streamed_asm, .text
 	link 32;
 	p0 = fp;
 	p1 = sp;
@@ -128,7 +123,7 @@ _bvb_lk_pyramid_streamed_asm:
 	lc1 = r0;
 	unlink;
 	rts;
-	.size _bvb_lk_pyramid_streamed_asm, . - _bvb_lk_pyramid_streamed_asm
+BVB_ENDFUNC bvb_lk_pyramid_streamed_asm
 
 	.section .rodata
 	.align 4
@@ -177,9 +172,7 @@ _bvb_lk_asm_ops:
 #define I_ARG_BLOCK 52
 #define BLK(n) ((n) * 4)
 
-	.global _bvb_lk_iterate_asm
-	.type _bvb_lk_iterate_asm, STT_FUNC
-_bvb_lk_iterate_asm:
+BVB_FUNC bvb_lk_iterate_asm
 	[--sp] = (r7:4, p5:3);
 	link I_SIZE;
 	[fp + I_IMG] = r0;
@@ -469,7 +462,7 @@ _bvb_lk_iterate_asm:
 	unlink;
 	(r7:4, p5:3) = [sp++];
 	rts;
-	.size _bvb_lk_iterate_asm, . - _bvb_lk_iterate_asm
+BVB_ENDFUNC bvb_lk_iterate_asm
 
 /* ---- bvb_lk_patch_asm(img, tmpl, grad, work, block) ----
  * The extended template Te, (wx + 2) x (wy + 2) Q5 values, by the same horizontal and vertical
@@ -489,9 +482,7 @@ _bvb_lk_iterate_asm:
 #define P_ARG_WORK  48
 #define P_ARG_BLOCK 52
 
-	.global _bvb_lk_patch_asm
-	.type _bvb_lk_patch_asm, STT_FUNC
-_bvb_lk_patch_asm:
+BVB_FUNC bvb_lk_patch_asm
 	[--sp] = (r7:4, p5:3);
 	link P_SIZE;
 	[fp + P_TMPL] = r1;
@@ -667,7 +658,7 @@ _bvb_lk_patch_asm:
 	unlink;
 	(r7:4, p5:3) = [sp++];
 	rts;
-	.size _bvb_lk_patch_asm, . - _bvb_lk_patch_asm
+BVB_ENDFUNC bvb_lk_patch_asm
 
 /* ---- bvb_lk_pyramid_asm(src, width, height, stride, levels, pyr) ----
  * Four output pixels per three issues: BYTEOP2P averages the 2x2 blocks of two outputs with
@@ -709,9 +700,9 @@ _bvb_lk_patch_asm:
 #define Y_ARG_LEVELS 52
 #define Y_ARG_PYR    56
 
-	.global _bvb_lk_pyramid_asm
-	.type _bvb_lk_pyramid_asm, STT_FUNC
-_bvb_lk_pyramid_asm:
+/* Aligned to 2 only: it starts where bvb_lk_patch_asm ends, so the L1 code after it keeps its
+ * addresses (and its cycles). */
+BVB_FUNC bvb_lk_pyramid_asm, .l1.text, 2
 	[--sp] = (r7:4, p5:3);
 	link Y_SIZE;
 	[fp + Y_IN] = r0;
@@ -845,4 +836,4 @@ _bvb_lk_pyramid_asm:
 	unlink;
 	(r7:4, p5:3) = [sp++];
 	rts;
-	.size _bvb_lk_pyramid_asm, . - _bvb_lk_pyramid_asm
+BVB_ENDFUNC bvb_lk_pyramid_asm

@@ -73,6 +73,7 @@
  * 8 * ceil(w / 8) + 8 halfwords, and for the DMA path the band buffers and two jobs (7.5 KB
  * at width 160, 17.2 KB at 320): L1 bank B. */
 
+#include "bvb/asm.h"
 #include "bvb/dma.h"
 
 /* The stack frame (LOC bytes below the 7 registers and RETS pushed). */
@@ -107,10 +108,7 @@
 	.section .l1.text, "ax"
 
 .macro MORPH3X3 name, op
-	.align 4
-	.global \name
-	.type \name, STT_FUNC
-\name:
+BVB_FUNC \name
 	[--sp] = (r7:4, p5:3);
 	[--sp] = rets;
 	sp += -52;
@@ -394,11 +392,11 @@
 	b[p1++] = r4;
 .Lvend_\@:
 	rts;
-	.size \name, . - \name
+BVB_ENDFUNC \name
 .endm
 
-	MORPH3X3 _bvb_erode3x3_u8_asm, min
-	MORPH3X3 _bvb_dilate3x3_u8_asm, max
+	MORPH3X3 bvb_erode3x3_u8_asm, min
+	MORPH3X3 bvb_dilate3x3_u8_asm, max
 
 	/* The DMA path (frames in SDRAM, scratch in L1 data SRAM): helpers shared by both
 	 * kernels, called with the kernel's frame at [sp] (at [sp + Q] once RETS is pushed).

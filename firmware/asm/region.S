@@ -60,6 +60,7 @@
  * free_space reads the mask once per scanned row and keeps its state in rows[] (L1 on hardware
  * for the per-row re-reads); 2.3 KB of stack (the band buffers, the DMA job). */
 
+#include "bvb/asm.h"
 #include "bvb/dma.h"
 
 	.section .l1.text, "ax"
@@ -111,10 +112,7 @@
 #define FS_MINGAP (44 + 4 + FS_LOC)
 #define FS_ROWS (48 + 4 + FS_LOC)
 
-	.align 4
-	.global _bvb_free_space_asm
-	.type _bvb_free_space_asm, STT_FUNC
-_bvb_free_space_asm:
+BVB_FUNC bvb_free_space_asm
 	[--sp] = (r7:4, p5:3);
 	[--sp] = rets;
 	p0 = FS_LOC (z);
@@ -480,7 +478,7 @@ _bvb_free_space_asm:
 	rets = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;
-	.size _bvb_free_space_asm, . - _bvb_free_space_asm
+BVB_ENDFUNC bvb_free_space_asm
 
 /* ---- bvb_region_grow_asm ---- */
 
@@ -770,11 +768,7 @@ _bvb_free_space_asm:
 .Lrg_one:
 	.int 1
 
-	.section .l1.text, "ax"
-	.align 4
-	.global _bvb_region_grow_asm
-	.type _bvb_region_grow_asm, STT_FUNC
-_bvb_region_grow_asm:
+BVB_FUNC bvb_region_grow_asm
 	[--sp] = (r7:4, p5:3);
 	[--sp] = fp;
 	/* The 16-bit address multiplies need strides and sizes in 0 .. 2^15 - 1: anything else
@@ -1072,4 +1066,4 @@ _bvb_region_grow_asm:
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;
-	.size _bvb_region_grow_asm, . - _bvb_region_grow_asm
+BVB_ENDFUNC bvb_region_grow_asm

@@ -125,6 +125,7 @@
  * is what lets a single 16-cycle group keep both the x and the x-1 neighbours. */
 
 /* The stack frame both kernels share (the helpers below read it at [sp + F_*]). */
+#include "bvb/asm.h"
 #include "bvb/dma.h"
 
 #define F_C     0	/* 0x00FF00FF: the s16 loop's MIN constant, read at [SP] */
@@ -190,11 +191,7 @@
 #define ARGS16  (LOCALS16 + 36)
 #define ARGS    (LOCALS + 36)	/* [sp + ARGS + 12]: the 4th argument */
 
-	.section .l1.text, "ax"
-	.align 4
-	.global _bvb_sobel3x3_u8_asm
-	.type _bvb_sobel3x3_u8_asm, STT_FUNC
-_bvb_sobel3x3_u8_asm:
+BVB_FUNC bvb_sobel3x3_u8_asm
 	[--sp] = (r7:4, p5:3);
 	[--sp] = fp;
 	[--sp] = rets;			/* the helpers below are called */
@@ -629,7 +626,7 @@ _bvb_sobel3x3_u8_asm:
 	fp = [sp++];
 	(r7:4, p5:3) = [sp++];
 	rts;
-	.size _bvb_sobel3x3_u8_asm, . - _bvb_sobel3x3_u8_asm
+BVB_ENDFUNC bvb_sobel3x3_u8_asm
 
 	/* The banded DMA path of the u8 kernel (bvb/sobel.h, "Working set and memory").
 	 *
@@ -1214,9 +1211,7 @@ _bvb_sobel3x3_u8_asm:
 	rts;
 #undef Q
 
-	.global _bvb_sobel3x3_s16_asm
-	.type _bvb_sobel3x3_s16_asm, STT_FUNC
-_bvb_sobel3x3_s16_asm:
+BVB_FUNC bvb_sobel3x3_s16_asm
 	[--sp] = (r7:4, p5:3);
 	[--sp] = fp;
 	[--sp] = rets;
@@ -2007,7 +2002,7 @@ _bvb_sobel3x3_s16_asm:
 	call _bvb_dma_start;
 	call _bvb_dma_wait;
 	jump .Ls16_done;
-	.size _bvb_sobel3x3_s16_asm, . - _bvb_sobel3x3_s16_asm
+BVB_ENDFUNC bvb_sobel3x3_s16_asm
 
 
 	/* r0 = an input row; returns it, or a copy in the safe line when the groups' reads

@@ -37,19 +37,21 @@
  *   next start (the wait's poll and 5 MMR writes at SCLK), and band 0 set up before the stream
  *   starts. Before the DMA path (frames read and written through the data cache): 288,570
  *   (15.0) / 1,041,129 (13.6). */
+#include "bvb/asm.h"
 #include "bvb/stream.h"
 
-	.section .l1.text, "ax"
-	.align 4
-	.global _bvb_uyvy_to_grey_asm
-	.type _bvb_uyvy_to_grey_asm, STT_FUNC
-_bvb_uyvy_to_grey_asm:
+#define PUSHED 44			/* R4-R7, P3-P5, RETS, 12 bytes of outgoing argument space */
+#define ARG_HEIGHT BVB_ARG(4, PUSHED)
+#define ARG_SRC_STRIDE BVB_ARG(5, PUSHED)
+#define ARG_DST_STRIDE BVB_ARG(6, PUSHED)
+#define ARG_SCRATCH BVB_ARG(7, PUSHED)
+
+BVB_FUNC bvb_uyvy_to_grey_asm
 	[--sp] = (r7:4, p5:3);
 	[--sp] = rets;
 	sp += -12;			/* the C routines' outgoing argument space */
-	/* [sp + 56] height, [sp + 60] src_stride, [sp + 64] dst_stride, [sp + 68] scratch. The
-	 * stream's planes in the scratch: what the direct path reads back if it is refused. */
-	p0 = [sp + 68];
+	/* The stream's planes in the scratch: what the direct path reads back if it is refused. */
+	p0 = [sp + ARG_SCRATCH];
 	[p0 + ST_SRC0] = r0;
 	[p0 + ST_DST] = r1;
 	r3 = r2 << 1;
@@ -57,11 +59,11 @@ _bvb_uyvy_to_grey_asm:
 	[p0 + ST_DB] = r2;
 	r3 = 0;
 	[p0 + ST_SB1] = r3;
-	r3 = [sp + 60];
+	r3 = [sp + ARG_SRC_STRIDE];
 	[p0 + ST_SS0] = r3;
-	r3 = [sp + 64];
+	r3 = [sp + ARG_DST_STRIDE];
 	[p0 + ST_DS] = r3;
-	r3 = [sp + 56];
+	r3 = [sp + ARG_HEIGHT];
 	[p0 + ST_ROWS] = r3;
 	r0 = p0;
 	call _bvb_stream_open;
@@ -69,11 +71,11 @@ _bvb_uyvy_to_grey_asm:
 	if !cc jump .Ldirect;
 	/* Bands: each one long row of n * width pixels, contiguous in L1 on both sides. */
 .Lband:
-	r0 = [sp + 68];
+	r0 = [sp + ARG_SCRATCH];
 	call _bvb_stream_next;
 	cc = r0 == 0;
 	if cc jump .Lret;
-	p0 = [sp + 68];
+	p0 = [sp + ARG_SCRATCH];
 	r4 = [p0 + ST_DB];
 	r4 *= r0;			/* pixels */
 	r1 = [p0 + ST_IN0];
@@ -85,16 +87,16 @@ _bvb_uyvy_to_grey_asm:
 	jump .Lband;
 
 .Ldirect:
-	p0 = [sp + 68];
+	p0 = [sp + ARG_SCRATCH];
 	r0 = [p0 + ST_SRC0];
 	r1 = [p0 + ST_DST];
 	r2 = [p0 + ST_DB];
 	i3 = r0;			/* source row */
 	i2 = r1;			/* destination row */
 	r4 = r2;			/* width */
-	r0 = [sp + 60];			/* src_stride */
-	r1 = [sp + 64];			/* dst_stride */
-	r3 = [sp + 56];			/* height */
+	r0 = [sp + ARG_SRC_STRIDE];
+	r1 = [sp + ARG_DST_STRIDE];
+	r3 = [sp + ARG_HEIGHT];
 	m3 = r0;
 	m2 = r1;
 	/* Contiguous rows: one long row. */
@@ -198,4 +200,4 @@ _bvb_uyvy_to_grey_asm:
 	p0 += 2;
 .Lt1:	b[p1++] = r5;
 	jump .Lrow_next;
-	.size _bvb_uyvy_to_grey_asm, . - _bvb_uyvy_to_grey_asm
+BVB_ENDFUNC bvb_uyvy_to_grey_asm
