@@ -91,6 +91,7 @@
 	.set .Ln, .Ln + 1
 	.endr
 
+#include "bvb/asm.h"
 #include "bvb/stream.h"
 
 	.section .l1.text, "ax"
@@ -192,10 +193,7 @@
 .endm
 
 /* void bvb_scanline_profile_u8_asm(src, width, rows, stride, profile, scratch) */
-	.align 4
-	.global _bvb_scanline_profile_u8_asm
-	.type _bvb_scanline_profile_u8_asm, STT_FUNC
-_bvb_scanline_profile_u8_asm:
+BVB_FUNC bvb_scanline_profile_u8_asm
 	[--sp] = (r7:4, p5:3);
 	[--sp] = rets;
 	sp += -F_LOC;
@@ -326,7 +324,7 @@ _bvb_scanline_profile_u8_asm:
 .Lq1:	r7 = r7 +|+ r5 || [i3++] = r6 || r6 = [i2++];
 	[i3++] = r7;
 	rts;
-	.size _bvb_scanline_profile_u8_asm, . - _bvb_scanline_profile_u8_asm
+BVB_ENDFUNC bvb_scanline_profile_u8_asm
 
 
 /* S(t) for one shift: I0 -> p1[i0], I1 -> p2[i0 + t] (circular over each profile's words),
@@ -454,10 +452,7 @@ _bvb_scanline_profile_u8_asm:
 .endm
 
 /* void bvb_scanline_shift_u8_asm(p1, p2, w, rho, result, curve) */
-	.align 4
-	.global _bvb_scanline_shift_u8_asm
-	.type _bvb_scanline_shift_u8_asm, STT_FUNC
-_bvb_scanline_shift_u8_asm:
+BVB_FUNC bvb_scanline_shift_u8_asm
 	[--sp] = (r7:4, p5:3);
 	[--sp] = fp;
 	fp = sp;			/* rho at [fp + 44], result [fp + 48], curve [fp + 52] */
@@ -576,7 +571,7 @@ _bvb_scanline_shift_u8_asm:
 	p0.l = .Lsh_big;
 	p0.h = .Lsh_big;
 	jump (p0);
-	.size _bvb_scanline_shift_u8_asm, . - _bvb_scanline_shift_u8_asm
+BVB_ENDFUNC bvb_scanline_shift_u8_asm
 
 	/* w > 512: t = 0 and k = 1..min(T, w - 512), overlaps above 512, with the MAC lane sum. */
 	.text
