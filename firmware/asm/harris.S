@@ -101,7 +101,8 @@
 #define F_XIN    -132  /* struct bvb_dma_xfer of the input row (24 bytes) */
 #define F_XOUT   -156  /* ... of the output row */
 #define F_DOUT   -160  /* dst in L1: the core writes the response rows there, no output DMA */
-#define F_SIZE   160
+#define F_WOFF   -164  /* bytes from a C plane to its W plane */
+#define F_SIZE   164
 
 	.global _bvb_harris_response_asm
 	.type _bvb_harris_response_asm, STT_FUNC
@@ -139,18 +140,24 @@ _bvb_harris_response_asm:
 	r0 += 1;
 	r0 >>= 1;
 	[fp + F_HALF] = r0;     /* ceil(npairs / 2) */
+	/* cxx, cyy, cxy, the three gradient slots, Wa, Wb, Wc: each C plane 18 NG + 96 bytes
+	 * before its W plane, which is another 4 KB sub-bank from 320 wide on */
 	r5 += 8;
-	[fp + F_SLOT0] = r5;
-	r7 = r6 << 2;
-	r7 += 16;
-	[fp + F_SLOTS] = r7;
-	r0 = r7 + r7;
-	r0 = r0 + r7;
-	r0 = r0 + r5;
-	[fp + F_CSUM] = r0;
+	[fp + F_CSUM] = r5;
 	r7 = r6 << 1;
 	r7 += 16;
 	[fp + F_PLANE] = r7;
+	r0 = r7 + r7;
+	r0 = r0 + r7;
+	r0 = r0 + r5;
+	[fp + F_SLOT0] = r0;
+	r3 = r6 << 2;
+	r3 += 16;
+	[fp + F_SLOTS] = r3;
+	r0 = r3 + r7;
+	r3 = r0 << 1;
+	r0 = r0 + r3;
+	[fp + F_WOFF] = r0;     /* 3 (PLANE + SLOTS) */
 	r0 = 0;
 	[fp + F_NEXT] = r0;
 
@@ -271,27 +278,29 @@ _bvb_harris_response_asm:
 	/* 3. window sums, one plane at a time: W = (c(x)|c(x-1)) + (c(x+1)|c(x)) + (c(x+2)|c(x+1)) */
 	r0 = [fp + F_CSUM];
 	p4 = r0;
-	r1 = [fp + F_PLANE];
-	r2 = r1 + r1;
-	r2 = r2 + r1;
-	p5 = r2;                /* C plane -> its W plane */
+	p5 = [fp + F_WOFF];     /* C plane -> its W plane */
 	p3 = [fp + F_HALF];
 	r7 = 3;
 .Lwin:
+	/* per pair n (x = 2n + 2): E = (c(x+1)|c(x)), O(n) = (c(x+2)|c(x+1)) from two halfword
+	 * loads, W = E + O(n-1) + O(n); two ALU issues a pair. The halfword c(x+1) shares its word
+	 * with E (one bank access); c(x+2) goes with the store. */
 	i0 = p4;
 	p0 = p4 + p5;
 	i1 = p0;                /* the first (garbage) store goes to W[0..1], the pair for x = 2 to W[2..3] */
-	r2 = [i0++];
-	r0 = [i0++];
-	r1 = pack (r0.l, r2.h);
+	r0 = p4;
+	r0 += 2;
+	i2 = r0;
+	r1.l = w[i2++];         /* O(-1) = (c(2)|c(1)) */
+	r1.h = w[i2++];
+	i0 += 4;                /* E of x = 2 */
 	lsetup (.Lw_s, .Lw_e) lc0 = p3;
-.Lw_s:	r4 = r1 +|+ r0 || r2 = [i0++];
-	r3 = pack (r2.l, r0.h) || [i1++] = r5;  /* not beside the load: C and W share sub-banks */
-	r4 = r4 +|+ r3 || r0 = [i0++];
-	r1 = pack (r0.l, r2.h) || [i1++] = r4;
-	r5 = r3 +|+ r2;
-.Lw_e:	r5 = r5 +|+ r1;
-	[i1++] = r5;
+.Lw_s:	r3 = r3 +|+ r1 || r0 = [i0++] || r5.l = w[i2++];
+	r4 = r0 +|+ r1 || r5.h = w[i2++] || [i1++] = r3;
+	r4 = r4 +|+ r5 || r0 = [i0++] || r1.l = w[i2++];
+.Lw_e:	r3 = r0 +|+ r5 || r1.h = w[i2++] || [i1++] = r4;
+	r3 = r3 +|+ r1;
+	[i1++] = r3;
 	r0 = [fp + F_PLANE];
 	r1 = p4;
 	r1 = r1 + r0;
@@ -303,8 +312,7 @@ _bvb_harris_response_asm:
 	/* 4. response, pairs x = 2, 4, ...; the first two stores (garbage) land on dst[0], dst[1] */
 	r0 = [fp + F_CSUM];
 	r1 = [fp + F_PLANE];
-	r2 = r1 + r1;
-	r2 = r2 + r1;
+	r2 = [fp + F_WOFF];
 	r0 = r0 + r2;
 	r0 += 4;
 	i0 = r0;                /* Wa + 2 elements */
@@ -712,7 +720,7 @@ _bvb_harris_response_asm:
 	r0 = 0;
 	[fp + F_JOB] = r0;
 	[fp + F_DOUT] = r0;
-	r0 = [fp + F_SLOT0];
+	r0 = [fp + F_CSUM];
 	r0 += -8;               /* scratch */
 	r2.l = 0;
 	r2.h = 0xff80;
@@ -761,7 +769,7 @@ _bvb_harris_response_asm:
 	r1 += 16;
 	r2 = 24;
 	r1 *= r2;
-	r2 = [fp + F_SLOT0];
+	r2 = [fp + F_CSUM];
 	r2 += -8;
 	r1 = r1 + r2;
 	[fp + F_JOB] = r1;
