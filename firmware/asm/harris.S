@@ -248,7 +248,9 @@ _bvb_harris_response_asm:
 	i2 = r0;
 	r0 = [fp + F_CSUM];
 	r1 = [fp + F_PLANE];
-	p0 = r0;                /* cxx */
+	r3 = r0;
+	r3 += -4;
+	p0 = r3;                /* cxx, stored one pair late as cyy is */
 	r0 = r0 + r1;
 	r2 = r0;
 	r2 += -4;               /* cyy is stored one pair late: the first store lands in the pad */
@@ -258,22 +260,23 @@ _bvb_harris_response_asm:
 	r0 = [fp + F_NG];
 	r0 >>= 1;
 	p3 = r0;
-	/* R0 gxA, R1 gyA, R2 gxB, R3 gyB, R4 gxC, R5 gyC (A, B, C the three slots) */
+	/* R0 gxA, R1 gyA, R2 gxB, R3 gyB, R4 gxC, R5 gyC (A, B, C the three slots); one data
+	 * access an issue, so no two of them meet in a sub-bank */
 	mnop || r0 = [i0++] || r2 = [i1++];
 	mnop || r1 = [i0++] || r3 = [i1++];
 	r4 = [i2++];
-	r5 = [i2++];
 	lsetup (.Lv_s, .Lv_e) lc0 = p3;
 .Lv_s:	a1 = r0.h * r1.h, a0 = r0.l * r1.l || [p1++] = r6;
-	a1 += r2.h * r3.h, a0 += r2.l * r3.l;
-	r6.h = (a1 += r4.h * r5.h), r6.l = (a0 += r4.l * r5.l) (t);
-	a1 = r0.h * r0.h, a0 = r0.l * r0.l || r0 = [i0++] || [p2++] = r6;
+	a1 += r2.h * r3.h, a0 += r2.l * r3.l || r5 = [i2++];
+	r6.h = (a1 += r4.h * r5.h), r6.l = (a0 += r4.l * r5.l) (t) || [p0++] = r7;
+	a1 = r0.h * r0.h, a0 = r0.l * r0.l || [p2++] = r6;
 	a1 += r2.h * r2.h, a0 += r2.l * r2.l || r2 = [i1++];
-	r7.h = (a1 += r4.h * r4.h), r7.l = (a0 += r4.l * r4.l) (t) || r4 = [i2++];
-	a1 = r1.h * r1.h, a0 = r1.l * r1.l || r1 = [i0++] || [p0++] = r7;
-	a1 += r3.h * r3.h, a0 += r3.l * r3.l || r3 = [i1++];
-.Lv_e:	r6.h = (a1 += r5.h * r5.h), r6.l = (a0 += r5.l * r5.l) (t) || r5 = [i2++];
+	r7.h = (a1 += r4.h * r4.h), r7.l = (a0 += r4.l * r4.l) (t) || r0 = [i0++];
+	a1 = r1.h * r1.h, a0 = r1.l * r1.l || r4 = [i2++];
+	a1 += r3.h * r3.h, a0 += r3.l * r3.l || r1 = [i0++];
+.Lv_e:	r6.h = (a1 += r5.h * r5.h), r6.l = (a0 += r5.l * r5.l) (t) || r3 = [i1++];
 	[p1++] = r6;
+	[p0++] = r7;
 
 	/* 3. window sums, one plane at a time: W = (c(x)|c(x-1)) + (c(x+1)|c(x)) + (c(x+2)|c(x+1)) */
 	r0 = [fp + F_CSUM];
