@@ -8,9 +8,16 @@
  *     pixels so that no load leaves the row;
  *  2. column sums of gx^2, gy^2, gx*gy over the three slots, two columns per dual MAC in signed
  *     fraction mode: (32g)(32g) << 1 = 2048 g^2, truncated high half = floor(sum / 32), exactly
- *     the C's ">> 5";
+ *     the C's ">> 5"; 6 loads and 3 stores in the 9 issues, one an issue, so that none pays an
+ *     L1 sub-bank collision whatever the layout;
  *  3. window sums over three columns, two pixels per 16-bit vector add: (c(x+1)|c(x)) +
- *     (c(x)|c(x-1)) + (c(x+2)|c(x+1)), the odd-aligned pairs by PACK;
+ *     (c(x)|c(x-1)) + (c(x+2)|c(x+1)), the odd-aligned pair built by two halfword loads (no
+ *     PACK: 2 ALU issues a pair); the halfword c(x+1) is loaded beside the word c(x+1)|c(x)
+ *     (one 32-bit word, no collision), c(x+2) beside the W store. The working rows are laid out
+ *     cxx, cyy, cxy, the three gradient slots, then Wa, Wb, Wc, so that a C plane and its W
+ *     plane are 18 NG + 96 bytes apart: from 4 KB to 12 KB (another sub-bank for every x)
+ *     for NG = 224 .. 672, widths 215 .. 670; narrower, a store may still collide (at 160
+ *     wide, 3,120 bytes apart, 23,896 of the 27,144, still no worse than the PACK's issue);
  *  4. the response, two pixels at a time: hh by the quad add with ASR, kh by a dual 16-bit
  *     multiply in (T) mode (floor(2*hh*K / 65536)), a*b - c*c - kh*hh by three dual MACs (IS).
  * Columns 0 and >= width-1 of the working rows are never cleaned: they only reach the border
@@ -41,26 +48,29 @@
  * and three dual MACs per pair: 2.5): 11.5 issues per pixel; every load and store fits a free
  * slot (per pair: 6 + 3 + 3 + 3 loads, 3 + 3 + 2 stores in 23 issues).
  *
- * Measured (bfbench bench, frames in SDRAM, scratch in L1B; modelled cycles under --timing
- * bf537, then the simulator's own count, --timing none):
- *   160x120     350,484  18.25 per pixel (bound 11.5: 1.59x)   sim   310,595
- *   320x240   1,172,856  15.27           (1.33x)                sim 1,120,155
- *   640x480   4,375,324  14.24           (1.24x)                sim 4,236,875
- *   (before the window sums' W store moved off the issue that loads plane C and the gy loop's
+ * Measured (bfbench bench -k harris_response -j 2, frames in SDRAM, scratch in L1B; modelled
+ * cycles under --timing bf537, then the simulator's own count, --timing none):
+ *   160x120     330,304  17.20 per pixel (bound 11.5: 1.50x)   sim   284,615
+ *   320x240   1,063,828  13.85           (1.20x)                sim 1,010,655
+ *   640x480   3,930,744  12.80           (1.11x)                sim 3,787,535
+ *   (with the window sums' odd pairs by PACK, 3 ALU issues a pair, and slots before planes:
+ *   350,484 / 1,172,856 / 4,375,324, sim 310,595 / 1,120,155 / 4,236,875;
+ *   before the window sums' W store moved off the issue that loads plane C and the gy loop's
  *   two rows off one issue: 365,829 / 1,244,191 / 4,429,624; dst in SDRAM: the test of where
  *   dst is costs some 8 cycles a row.)
  *   (C -O2 from SDRAM: 3,008,346 / 12,238,913 / 49,397,617.) Before the DMA path (frames and
  *   scratch read and written in place in SDRAM through the data cache): 793,108 modelled at
  *   160x120 (41 per pixel; sim 274,911), the response's 4 bytes per pixel paying a line fill
  *   and a write-back per 8 pixels.
- *   Where the 320x240 cycles go over the bound's 883,200 (1,092,689 issues, bfbench profile):
- *   the PACKs of the window sums (1.5 per pixel, 115,000) and the per-row set-up of the four
- *   passes; the DMA bookkeeping (about 290 cycles a row, 68,000); then under the model
- *   multi-cycle branches and calls 38,045, L1 sub-bank collisions 22,348 (the gx loop loads
- *   one row at -1 and +1, unaligned, so by the BYTEOP's own issue: 18,564; the column sums
- *   load slot 0 in the issue that stores cxx or cxy), MMR accesses 16,480; the fill (job A,
- *   4 rows) and the last row's transfer, which no compute covers. At 640x480 the per-row
- *   costs weigh a quarter.
+ *   Where the 320x240 cycles go over the bound's 883,200 (983,189 issues, bfbench profile):
+ *   the passes run over NG (328) columns, not 320, and the per-row set-up of the four passes
+ *   (the window sums' three planes 345 cycles a row against 335 in their loops); the DMA
+ *   bookkeeping (about 290 cycles a row, 68,000); then under the model multi-cycle branches
+ *   and calls 38,045, L1 sub-bank collisions 19,988 (the gx loop loads one row at -1 and +1,
+ *   unaligned, so by the BYTEOP's own issue: 18,564), MMR accesses 16,480; the fill (job A,
+ *   4 rows) and the last row's transfer, which no compute covers. At 160x120 the window sums'
+ *   stores add 23,896 collisions and the gx loop 4,484; at 640x480 the per-row costs weigh a
+ *   quarter.
  * Working set: 24 * NG + 144 bytes of working rows, then the DMA region (job, four image rows,
  * two response rows): BVB_HARRIS_SCRATCH_BYTES, 6.4 KB at 160, 23.7 KB at 640. */
 #include "bvb/dma.h"
