@@ -5,7 +5,8 @@
  *  1. gradients of the one new image row, central differences x32, by BYTEOP16M four pixels at a
  *     time (gy from the rows above and below, gx from the row itself at offsets +1 and -1, each
  *     stream aligned by I0/I1), into one of three ring slots; a scalar tail for the last <= 12
- *     pixels so that no load leaves the row;
+ *     pixels so that no load leaves the row; for a word-aligned row (the DMA path's ring) gx
+ *     from one load stream, both windows in one register pair (no sub-bank collision);
  *  2. column sums of gx^2, gy^2, gx*gy over the three slots, two columns per dual MAC in signed
  *     fraction mode: (32g)(32g) << 1 = 2048 g^2, truncated high half = floor(sum / 32), exactly
  *     the C's ">> 5"; 6 loads and 3 stores in the 9 issues, one an issue, so that none pays an
@@ -50,9 +51,9 @@
  *
  * Measured (bfbench bench -k harris_response -j 2, frames in SDRAM, scratch in L1B; modelled
  * cycles under --timing bf537, then the simulator's own count, --timing none):
- *   160x120     330,304  17.20 per pixel (bound 11.5: 1.50x)   sim   284,615
- *   320x240   1,063,828  13.85           (1.20x)                sim 1,010,655
- *   640x480   3,930,744  12.80           (1.11x)                sim 3,787,535
+ *   160x120     329,124  17.14 per pixel (bound 11.5: 1.49x)   sim   288,273
+ *   320x240   1,051,978  13.70           (1.19x)                sim 1,018,033
+ *   640x480   3,868,848  12.59           (1.10x)                sim 3,802,353
  *   (with the window sums' odd pairs by PACK, 3 ALU issues a pair, and slots before planes:
  *   350,484 / 1,172,856 / 4,375,324, sim 310,595 / 1,120,155 / 4,236,875;
  *   before the window sums' W store moved off the issue that loads plane C and the gy loop's
@@ -62,15 +63,14 @@
  *   scratch read and written in place in SDRAM through the data cache): 793,108 modelled at
  *   160x120 (41 per pixel; sim 274,911), the response's 4 bytes per pixel paying a line fill
  *   and a write-back per 8 pixels.
- *   Where the 320x240 cycles go over the bound's 883,200 (983,189 issues, bfbench profile):
+ *   Where the 320x240 cycles go over the bound's 883,200 (987,721 issues, bfbench profile):
  *   the passes run over NG (328) columns, not 320, and the per-row set-up of the four passes
  *   (the window sums' three planes 345 cycles a row against 335 in their loops); the DMA
- *   bookkeeping (about 290 cycles a row, 68,000); then under the model multi-cycle branches
- *   and calls 38,045, L1 sub-bank collisions 19,988 (the gx loop loads one row at -1 and +1,
- *   unaligned, so by the BYTEOP's own issue: 18,564), MMR accesses 16,480; the fill (job A,
- *   4 rows) and the last row's transfer, which no compute covers. At 160x120 the window sums'
- *   stores add 23,896 collisions and the gx loop 4,484; at 640x480 the per-row costs weigh a
- *   quarter.
+ *   bookkeeping (about 290 cycles a row, 68,000); the gx tail's extra pair on aligned rows
+ *   (some 30 cycles a row); then under the model multi-cycle branches and calls 40,925, MMR
+ *   accesses 16,496, L1 sub-bank collisions 948; the fill (job A, 4 rows) and the last row's
+ *   transfer, which no compute covers. At 160x120 the window sums' stores add 23,896
+ *   collisions (of 24,364); at 640x480 the per-row costs weigh a quarter.
  * Working set: 24 * NG + 144 bytes of working rows, then the DMA region (job, four image rows,
  * two response rows): BVB_HARRIS_SCRATCH_BYTES, 6.4 KB at 160, 23.7 KB at 640. */
 #include "bvb/dma.h"
@@ -871,6 +871,10 @@ _bvb_harris_response_asm:
 	[i2++m2] = r7;
 	/* gx = mid[x+1] - mid[x-1] */
 	r5 = p0;
+	r0 = 3;
+	r0 = r0 & r5;
+	cc = r0 == 0;
+	if cc jump .Lgx_a;
 	r0 = r5;
 	r0 += 1;
 	i0 = r0;
@@ -896,6 +900,7 @@ _bvb_harris_response_asm:
 	/* x from 8 n8 to width - 2: pairs, then perhaps one pixel. R5 mid, R4 dn, R3 up. */
 	r6 = [fp + F_N8];
 	r6 <<= 3;               /* x */
+.Lg_tail_x:
 	r0 = [fp + F_W];
 	r0 += -1;
 	r0 = r0 - r6;           /* pixels left: width - 1 - x */
@@ -948,6 +953,36 @@ _bvb_harris_response_asm:
 	w[i3] = r6.l;
 .Lg_done:
 	rts;
+	/* mid word-aligned (the ring's rows): one load stream, both windows from one register pair,
+	 * so no two loads share an issue (the two streams' words collided in a sub-bank). Groups
+	 * x = 4j - 2 .. 4j + 1: the x+1 window at byte 3 of the word at mid + 4j - 4, the x-1
+	 * window at byte 1; pair x = -2 goes to the pad before the slot. */
+.Lgx_a:
+	r0 = r5;
+	r0 += -1;
+	i0 = r0;
+	r0 += -2;
+	i1 = r0;
+	r0 = p1;
+	r0 += -16;
+	i2 = r0;
+	disalgnexcpt || r0 = [i0++];
+	disalgnexcpt || r1 = [i0++];
+	lsetup (.Lgxa_s, .Lgxa_e) lc0 = p3;
+.Lgxa_s: (r5, r4) = byteop16m (r1:0, r1:0) || r0 = [i0++];
+	r4 = r4 << 5 (v) || [i2++m2] = r7;
+	r5 = r5 << 5 (v) || [i2++m2] = r4;
+	(r7, r6) = byteop16m (r1:0, r1:0) (r) || r1 = [i0++];
+	r6 = r6 << 5 (v) || [i2++m2] = r5;
+.Lgxa_e: r7 = r7 << 5 (v) || [i2++m2] = r6;
+	[i2++m2] = r7;
+	r5 = p0;
+	r4 = [fp + F_DNP];
+	r3 = [fp + F_UPP];
+	r6 = [fp + F_N8];
+	r6 <<= 3;
+	r6 += -2;               /* the tail from x = 8 n8 - 2 (its gy pair again, the same values) */
+	jump .Lg_tail_x;
 	.size _bvb_harris_response_asm, . - _bvb_harris_response_asm
 
 /* Harris candidates (bvb_harris_nms in bvb/harris.h), bit-exact with firmware/c/harris.c.
