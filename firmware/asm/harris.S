@@ -4,7 +4,7 @@
  * NG = (width + 9) & ~7, so at least width + 2 columns):
  *  1. gradients of the one new image row, central differences x32, by BYTEOP16M four pixels at a
  *     time (gy from the rows above and below, gx from the row itself at offsets +1 and -1, each
- *     stream aligned by I0/I1), into one of three ring slots; a scalar tail for the last <= 12
+ *     stream aligned by I0/I1), into one of three ring slots; a scalar tail for the last <= 14
  *     pixels so that no load leaves the row; for a word-aligned row (the DMA path's ring) gx
  *     from one load stream, both windows in one register pair (no sub-bank collision);
  *  2. column sums of gx^2, gy^2, gx*gy over the three slots, two columns per dual MAC in signed
@@ -15,12 +15,14 @@
  *     (c(x)|c(x-1)) + (c(x+2)|c(x+1)), the odd-aligned pair built by two halfword loads (no
  *     PACK: 2 ALU issues a pair); the halfword c(x+1) is loaded beside the word c(x+1)|c(x)
  *     (one 32-bit word, no collision), c(x+2) beside the W store. The working rows are laid out
- *     cxx, cyy, cxy, the three gradient slots, then Wa, Wb, Wc, so that a C plane and its W
+ *     cxx, cyy, cxy, the three gradient slots, then Wa, Wb, so that a C plane and its W
  *     plane are 18 NG + 96 bytes apart: from 4 KB to 12 KB (another sub-bank for every x)
  *     for NG = 224 .. 672, widths 215 .. 670; narrower, a store may still collide (at 160
- *     wide, 3,120 bytes apart, 23,896 of the 27,144, still no worse than the PACK's issue);
- *  4. the response, two pixels at a time: hh by the quad add with ASR, kh by a dual 16-bit
- *     multiply in (T) mode (floor(2*hh*K / 65536)), a*b - c*c - kh*hh by three dual MACs (IS).
+ *     wide, 3,120 bytes apart, every one: still no worse than the PACK's issue was);
+ *  4. the response, two pixels at a time: c's window sum made here as in pass 3 (its ALU
+ *     issues fill the same 7 issues as its 5 loads and 2 stores, and a pass's set-up goes),
+ *     hh by the quad add with ASR, kh by a dual 16-bit multiply in (T) mode
+ *     (floor(2*hh*K / 65536)), a*b - c*c - kh*hh by three dual MACs (IS).
  * Columns 0 and >= width-1 of the working rows are never cleaned: they only reach the border
  * outputs, which are written as 0 afterwards.
  *
@@ -51,9 +53,9 @@
  *
  * Measured (bfbench bench -k harris_response -j 2, frames in SDRAM, scratch in L1B; modelled
  * cycles under --timing bf537, then the simulator's own count, --timing none):
- *   160x120     329,124  17.14 per pixel (bound 11.5: 1.49x)   sim   288,273
- *   320x240   1,051,978  13.70           (1.19x)                sim 1,018,033
- *   640x480   3,868,848  12.59           (1.10x)                sim 3,802,353
+ *   160x120     321,120  16.73 per pixel (bound 11.5: 1.45x)   sim   286,533
+ *   320x240   1,047,494  13.64           (1.19x)                sim 1,014,493
+ *   640x480   3,859,804  12.56           (1.09x)                sim 3,795,213
  *   (with the window sums' odd pairs by PACK, 3 ALU issues a pair, and slots before planes:
  *   350,484 / 1,172,856 / 4,375,324, sim 310,595 / 1,120,155 / 4,236,875;
  *   before the window sums' W store moved off the issue that loads plane C and the gy loop's
@@ -63,14 +65,14 @@
  *   scratch read and written in place in SDRAM through the data cache): 793,108 modelled at
  *   160x120 (41 per pixel; sim 274,911), the response's 4 bytes per pixel paying a line fill
  *   and a write-back per 8 pixels.
- *   Where the 320x240 cycles go over the bound's 883,200 (987,721 issues, bfbench profile):
+ *   Where the 320x240 cycles go over the bound's 883,200 (985,125 issues, bfbench profile):
  *   the passes run over NG (328) columns, not 320, and the per-row set-up of the four passes
- *   (the window sums' three planes 345 cycles a row against 335 in their loops); the DMA
+ *   (the window sums' two planes some 10 cycles a row over their loops); the DMA
  *   bookkeeping (about 290 cycles a row, 68,000); the gx tail's extra pair on aligned rows
- *   (some 30 cycles a row); then under the model multi-cycle branches and calls 40,925, MMR
+ *   (some 30 cycles a row); then under the model multi-cycle branches and calls 39,981, MMR
  *   accesses 16,496, L1 sub-bank collisions 948; the fill (job A, 4 rows) and the last row's
- *   transfer, which no compute covers. At 160x120 the window sums' stores add 23,896
- *   collisions (of 24,364); at 640x480 the per-row costs weigh a quarter.
+ *   transfer, which no compute covers. At 160x120 the window sums' stores add 18,096
+ *   collisions (of 18,564); at 640x480 the per-row costs weigh a quarter.
  * Working set: 24 * NG + 144 bytes of working rows, then the DMA region (job, four image rows,
  * two response rows): BVB_HARRIS_SCRATCH_BYTES, 6.4 KB at 160, 23.7 KB at 640. */
 #include "bvb/dma.h"
@@ -91,7 +93,7 @@
 #define F_NPAIR  -36   /* response pairs per row: (width - 3) >> 1 */
 #define F_SLOT0  -40   /* gradient slot 0 */
 #define F_SLOTS  -44   /* bytes between slots: 4 * NG + 16 */
-#define F_CSUM   -48   /* cxx plane (cyy, cxy, Wa, Wb, Wc follow) */
+#define F_CSUM   -48   /* cxx plane (cyy, cxy, the slots, Wa, Wb follow) */
 #define F_PLANE  -52   /* bytes between planes: 2 * NG + 16 */
 #define F_MID    -56   /* image row of the next gradient row */
 #define F_NEXT   -60   /* slot index (0..2) the next gradient row goes to */
@@ -150,7 +152,7 @@ _bvb_harris_response_asm:
 	r0 += 1;
 	r0 >>= 1;
 	[fp + F_HALF] = r0;     /* ceil(npairs / 2) */
-	/* cxx, cyy, cxy, the three gradient slots, Wa, Wb, Wc: each C plane 18 NG + 96 bytes
+	/* cxx, cyy, cxy, the three gradient slots, Wa, Wb: each C plane 18 NG + 96 bytes
 	 * before its W plane, which is another 4 KB sub-bank from 320 wide on */
 	r5 += 8;
 	[fp + F_CSUM] = r5;
@@ -293,7 +295,7 @@ _bvb_harris_response_asm:
 	p4 = r0;
 	p5 = [fp + F_WOFF];     /* C plane -> its W plane */
 	p3 = [fp + F_HALF];
-	r7 = 3;
+	r7 = 2;                 /* cxx and cyy: cxy's window sum is made in the response */
 .Lwin:
 	/* per pair n (x = 2n + 2): E = (c(x+1)|c(x)), O(n) = (c(x+2)|c(x+1)) from two halfword
 	 * loads, W = E + O(n-1) + O(n); two ALU issues a pair. The halfword c(x+1) shares its word
@@ -330,21 +332,33 @@ _bvb_harris_response_asm:
 	r0 += 4;
 	i0 = r0;                /* Wa + 2 elements */
 	r0 = r0 + r1;
-	i1 = r0;
-	r0 = r0 + r1;
-	i2 = r0;
+	i1 = r0;                /* Wb + 2 elements */
+	r0 = [fp + F_CSUM];
+	r1 = r1 << 1;
+	r0 = r0 + r1;           /* cxy */
+	r1 = r0;
+	r1 += 4;
+	i2 = r1;                /* E = (c(3)|c(2)) */
+	r0 += 2;
+	i3 = r0;
 	p0 = [fp + F_DST];
 	p3 = [fp + F_NPAIR];
 	r3 = BVB_HARRIS_K4_Q15 (x);
 	r0 = [i0++];
 	r1 = [i1++];
 	r2 = [i2++];
+	r5.l = w[i3++];         /* O = (c(2)|c(1)) */
+	r5.h = w[i3++];
+	/* c = E + O(x-1) + O(x+1) as in the window sums, O in one register: its halves are loaded
+	 * after the first add and before the second. One data access an issue. */
 	lsetup (.Lr_s, .Lr_e) lc0 = p3;
-.Lr_s:	r4 = r0 +|+ r1, r5 = r0 -|- r1 (asr) || [p0++] = r6;
-	r6.h = r4.h * r3.l, r6.l = r4.l * r3.l (t) || [p0++] = r7;
-	a1 = r0.h * r1.h, a0 = r0.l * r1.l (is) || r0 = [i0++];
-	a1 -= r2.h * r2.h, a0 -= r2.l * r2.l (is) || r1 = [i1++];
-.Lr_e:	r7 = (a1 -= r6.h * r4.h), r6 = (a0 -= r6.l * r4.l) (is) || r2 = [i2++];
+.Lr_s:	r2 = r2 +|+ r5 || [p0++] = r6;
+	a1 = r0.h * r1.h, a0 = r0.l * r1.l (is) || [p0++] = r7;
+	r4 = r0 +|+ r1, r0 = r0 -|- r1 (asr) || r5.l = w[i3++];
+	r6.h = r4.h * r3.l, r6.l = r4.l * r3.l (t) || r5.h = w[i3++];
+	r2 = r2 +|+ r5 || r0 = [i0++];
+	a1 -= r2.h * r2.h, a0 -= r2.l * r2.l (is) || r2 = [i2++];
+.Lr_e:	r7 = (a1 -= r6.h * r4.h), r6 = (a0 -= r6.l * r4.l) (is) || r1 = [i1++];
 	[p0++] = r6;
 	[p0++] = r7;
 	/* the border columns */
