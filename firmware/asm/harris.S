@@ -1036,6 +1036,28 @@ _bvb_harris_response_asm:
 #define C_ARG_COUNT   60
 #define C_ARG_SCRATCH 64
 
+/* A 2x2 block above the threshold (I0, I1 at the next block's upper and lower pair, M2 = -16,
+ * M3 the stride): its upper pair's larger value in R0 (R4 its offset, 0 or 4) and the lower
+ * pair's in R2 (R5 its offset, stride or stride + 4), raster-first among equals; the two
+ * scans' slow paths (bvb_harris_nms_asm's and the ring's) share it. */
+.macro NMS_BLOCK_WINNERS
+	i0 += m2;
+	i1 += m2;
+	mnop || r0 = [i0++] || r2 = [i1++];     /* a, c */
+	mnop || r1 = [i0++] || r3 = [i1++];     /* b, d */
+	r4 = 0;
+	r5 = 4;
+	cc = r0 < r1;
+	if cc r0 = r1;
+	if cc r4 = r5;
+	r5 = m3;
+	r1 = r5;
+	r1 += 4;
+	cc = r2 < r3;
+	if cc r2 = r3;
+	if cc r5 = r1;
+.endm
+
 	.global _bvb_harris_nms_asm
 	.type _bvb_harris_nms_asm, STT_FUNC
 _bvb_harris_nms_asm:
@@ -1209,21 +1231,7 @@ _bvb_harris_nms_asm:
 /* A 2x2 block above the threshold: its upper pair is 16 bytes behind I0, its lower pair 16
  * behind I1. Leaves R0-R3 holding the next block and I0, I1 after it, as the loop expects. */
 .Lc_slow:
-	i0 += m2;
-	i1 += m2;
-	mnop || r0 = [i0++] || r2 = [i1++];     /* a, c */
-	mnop || r1 = [i0++] || r3 = [i1++];     /* b, d */
-	r4 = 0;
-	r5 = 4;
-	cc = r0 < r1;                            /* the winner, raster-first among equals */
-	if cc r0 = r1;
-	if cc r4 = r5;
-	r5 = m3;
-	r1 = r5;
-	r1 += 4;
-	cc = r2 < r3;
-	if cc r2 = r3;
-	if cc r5 = r1;
+	NMS_BLOCK_WINNERS
 	cc = r0 < r2;
 	if cc r0 = r2;
 	if cc r4 = r5;                           /* R0 its value, R4 its offset from the block */
@@ -1914,21 +1922,7 @@ _bvb_harris_nms_stream_asm:
 	/* above the threshold: bvb_harris_nms_asm's .Lc_slow with the ring's distances; the row
 	 * above an upper winner is G before it and the row below Dp after it; above a lower
 	 * winner Dp before, below G after */
-	i0 += m2;
-	i1 += m2;
-	mnop || r0 = [i0++] || r2 = [i1++];     /* a, c */
-	mnop || r1 = [i0++] || r3 = [i1++];     /* b, d */
-	r4 = 0;
-	r5 = 4;
-	cc = r0 < r1;
-	if cc r0 = r1;
-	if cc r4 = r5;
-	r5 = m3;
-	r1 = r5;
-	r1 += 4;
-	cc = r2 < r3;
-	if cc r2 = r3;
-	if cc r5 = r1;
+	NMS_BLOCK_WINNERS
 	r1 = m0;
 	r3 = m3;
 	cc = r0 < r2;
