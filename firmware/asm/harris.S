@@ -4,15 +4,25 @@
  * NG = (width + 9) & ~7, so at least width + 2 columns):
  *  1. gradients of the one new image row, central differences x32, by BYTEOP16M four pixels at a
  *     time (gy from the rows above and below, gx from the row itself at offsets +1 and -1, each
- *     stream aligned by I0/I1), into one of three ring slots; a scalar tail for the last <= 12
- *     pixels so that no load leaves the row;
+ *     stream aligned by I0/I1), into one of three ring slots; a scalar tail for the last <= 14
+ *     pixels so that no load leaves the row; for a word-aligned row (the DMA path's ring) gx
+ *     from one load stream, both windows in one register pair (no sub-bank collision);
  *  2. column sums of gx^2, gy^2, gx*gy over the three slots, two columns per dual MAC in signed
  *     fraction mode: (32g)(32g) << 1 = 2048 g^2, truncated high half = floor(sum / 32), exactly
- *     the C's ">> 5";
+ *     the C's ">> 5"; 6 loads and 3 stores in the 9 issues, one an issue, so that none pays an
+ *     L1 sub-bank collision whatever the layout;
  *  3. window sums over three columns, two pixels per 16-bit vector add: (c(x+1)|c(x)) +
- *     (c(x)|c(x-1)) + (c(x+2)|c(x+1)), the odd-aligned pairs by PACK;
- *  4. the response, two pixels at a time: hh by the quad add with ASR, kh by a dual 16-bit
- *     multiply in (T) mode (floor(2*hh*K / 65536)), a*b - c*c - kh*hh by three dual MACs (IS).
+ *     (c(x)|c(x-1)) + (c(x+2)|c(x+1)), the odd-aligned pair built by two halfword loads (no
+ *     PACK: 2 ALU issues a pair); the halfword c(x+1) is loaded beside the word c(x+1)|c(x)
+ *     (one 32-bit word, no collision), c(x+2) beside the W store. The working rows are laid out
+ *     cxx, cyy, cxy, the three gradient slots, then Wa, Wb, so that a C plane and its W
+ *     plane are 18 NG + 96 bytes apart: from 4 KB to 12 KB (another sub-bank for every x)
+ *     for NG = 224 .. 672, widths 215 .. 670; narrower, a store may still collide (at 160
+ *     wide, 3,120 bytes apart, every one: still no worse than the PACK's issue was);
+ *  4. the response, two pixels at a time: c's window sum made here as in pass 3 (its ALU
+ *     issues fill the same 7 issues as its 5 loads and 2 stores, and a pass's set-up goes),
+ *     hh by the quad add with ASR, kh by a dual 16-bit multiply in (T) mode
+ *     (floor(2*hh*K / 65536)), a*b - c*c - kh*hh by three dual MACs (IS).
  * Columns 0 and >= width-1 of the working rows are never cleaned: they only reach the border
  * outputs, which are written as 0 afterwards.
  *
@@ -41,26 +51,28 @@
  * and three dual MACs per pair: 2.5): 11.5 issues per pixel; every load and store fits a free
  * slot (per pair: 6 + 3 + 3 + 3 loads, 3 + 3 + 2 stores in 23 issues).
  *
- * Measured (bfbench bench, frames in SDRAM, scratch in L1B; modelled cycles under --timing
- * bf537, then the simulator's own count, --timing none):
- *   160x120     350,484  18.25 per pixel (bound 11.5: 1.59x)   sim   310,595
- *   320x240   1,172,856  15.27           (1.33x)                sim 1,120,155
- *   640x480   4,375,324  14.24           (1.24x)                sim 4,236,875
- *   (before the window sums' W store moved off the issue that loads plane C and the gy loop's
+ * Measured (bfbench bench -k harris_response -j 2, frames in SDRAM, scratch in L1B; modelled
+ * cycles under --timing bf537, then the simulator's own count, --timing none):
+ *   160x120     321,120  16.73 per pixel (bound 11.5: 1.45x)   sim   286,533
+ *   320x240   1,047,494  13.64           (1.19x)                sim 1,014,493
+ *   640x480   3,859,804  12.56           (1.09x)                sim 3,795,213
+ *   (with the window sums' odd pairs by PACK, 3 ALU issues a pair, and slots before planes:
+ *   350,484 / 1,172,856 / 4,375,324, sim 310,595 / 1,120,155 / 4,236,875;
+ *   before the window sums' W store moved off the issue that loads plane C and the gy loop's
  *   two rows off one issue: 365,829 / 1,244,191 / 4,429,624; dst in SDRAM: the test of where
  *   dst is costs some 8 cycles a row.)
  *   (C -O2 from SDRAM: 3,008,346 / 12,238,913 / 49,397,617.) Before the DMA path (frames and
  *   scratch read and written in place in SDRAM through the data cache): 793,108 modelled at
  *   160x120 (41 per pixel; sim 274,911), the response's 4 bytes per pixel paying a line fill
  *   and a write-back per 8 pixels.
- *   Where the 320x240 cycles go over the bound's 883,200 (1,092,689 issues, bfbench profile):
- *   the PACKs of the window sums (1.5 per pixel, 115,000) and the per-row set-up of the four
- *   passes; the DMA bookkeeping (about 290 cycles a row, 68,000); then under the model
- *   multi-cycle branches and calls 38,045, L1 sub-bank collisions 22,348 (the gx loop loads
- *   one row at -1 and +1, unaligned, so by the BYTEOP's own issue: 18,564; the column sums
- *   load slot 0 in the issue that stores cxx or cxy), MMR accesses 16,480; the fill (job A,
- *   4 rows) and the last row's transfer, which no compute covers. At 640x480 the per-row
- *   costs weigh a quarter.
+ *   Where the 320x240 cycles go over the bound's 883,200 (985,125 issues, bfbench profile):
+ *   the passes run over NG (328) columns, not 320, and the per-row set-up of the four passes
+ *   (the window sums' two planes some 10 cycles a row over their loops); the DMA
+ *   bookkeeping (about 290 cycles a row, 68,000); the gx tail's extra pair on aligned rows
+ *   (some 30 cycles a row); then under the model multi-cycle branches and calls 39,981, MMR
+ *   accesses 16,496, L1 sub-bank collisions 948; the fill (job A, 4 rows) and the last row's
+ *   transfer, which no compute covers. At 160x120 the window sums' stores add 18,096
+ *   collisions (of 18,564); at 640x480 the per-row costs weigh a quarter.
  * Working set: 24 * NG + 144 bytes of working rows, then the DMA region (job, four image rows,
  * two response rows): BVB_HARRIS_SCRATCH_BYTES, 6.4 KB at 160, 23.7 KB at 640. */
 #include "bvb/dma.h"
@@ -81,7 +93,7 @@
 #define F_NPAIR  -36   /* response pairs per row: (width - 3) >> 1 */
 #define F_SLOT0  -40   /* gradient slot 0 */
 #define F_SLOTS  -44   /* bytes between slots: 4 * NG + 16 */
-#define F_CSUM   -48   /* cxx plane (cyy, cxy, Wa, Wb, Wc follow) */
+#define F_CSUM   -48   /* cxx plane (cyy, cxy, the slots, Wa, Wb follow) */
 #define F_PLANE  -52   /* bytes between planes: 2 * NG + 16 */
 #define F_MID    -56   /* image row of the next gradient row */
 #define F_NEXT   -60   /* slot index (0..2) the next gradient row goes to */
@@ -101,7 +113,8 @@
 #define F_XIN    -132  /* struct bvb_dma_xfer of the input row (24 bytes) */
 #define F_XOUT   -156  /* ... of the output row */
 #define F_DOUT   -160  /* dst in L1: the core writes the response rows there, no output DMA */
-#define F_SIZE   160
+#define F_WOFF   -164  /* bytes from a C plane to its W plane */
+#define F_SIZE   164
 
 	.global _bvb_harris_response_asm
 	.type _bvb_harris_response_asm, STT_FUNC
@@ -139,18 +152,24 @@ _bvb_harris_response_asm:
 	r0 += 1;
 	r0 >>= 1;
 	[fp + F_HALF] = r0;     /* ceil(npairs / 2) */
+	/* cxx, cyy, cxy, the three gradient slots, Wa, Wb: each C plane 18 NG + 96 bytes
+	 * before its W plane, which is another 4 KB sub-bank from 320 wide on */
 	r5 += 8;
-	[fp + F_SLOT0] = r5;
-	r7 = r6 << 2;
-	r7 += 16;
-	[fp + F_SLOTS] = r7;
-	r0 = r7 + r7;
-	r0 = r0 + r7;
-	r0 = r0 + r5;
-	[fp + F_CSUM] = r0;
+	[fp + F_CSUM] = r5;
 	r7 = r6 << 1;
 	r7 += 16;
 	[fp + F_PLANE] = r7;
+	r0 = r7 + r7;
+	r0 = r0 + r7;
+	r0 = r0 + r5;
+	[fp + F_SLOT0] = r0;
+	r3 = r6 << 2;
+	r3 += 16;
+	[fp + F_SLOTS] = r3;
+	r0 = r3 + r7;
+	r3 = r0 << 1;
+	r0 = r0 + r3;
+	[fp + F_WOFF] = r0;     /* 3 (PLANE + SLOTS) */
 	r0 = 0;
 	[fp + F_NEXT] = r0;
 
@@ -241,7 +260,9 @@ _bvb_harris_response_asm:
 	i2 = r0;
 	r0 = [fp + F_CSUM];
 	r1 = [fp + F_PLANE];
-	p0 = r0;                /* cxx */
+	r3 = r0;
+	r3 += -4;
+	p0 = r3;                /* cxx, stored one pair late as cyy is */
 	r0 = r0 + r1;
 	r2 = r0;
 	r2 += -4;               /* cyy is stored one pair late: the first store lands in the pad */
@@ -251,47 +272,50 @@ _bvb_harris_response_asm:
 	r0 = [fp + F_NG];
 	r0 >>= 1;
 	p3 = r0;
-	/* R0 gxA, R1 gyA, R2 gxB, R3 gyB, R4 gxC, R5 gyC (A, B, C the three slots) */
+	/* R0 gxA, R1 gyA, R2 gxB, R3 gyB, R4 gxC, R5 gyC (A, B, C the three slots); one data
+	 * access an issue, so no two of them meet in a sub-bank */
 	mnop || r0 = [i0++] || r2 = [i1++];
 	mnop || r1 = [i0++] || r3 = [i1++];
 	r4 = [i2++];
-	r5 = [i2++];
 	lsetup (.Lv_s, .Lv_e) lc0 = p3;
 .Lv_s:	a1 = r0.h * r1.h, a0 = r0.l * r1.l || [p1++] = r6;
-	a1 += r2.h * r3.h, a0 += r2.l * r3.l;
-	r6.h = (a1 += r4.h * r5.h), r6.l = (a0 += r4.l * r5.l) (t);
-	a1 = r0.h * r0.h, a0 = r0.l * r0.l || r0 = [i0++] || [p2++] = r6;
+	a1 += r2.h * r3.h, a0 += r2.l * r3.l || r5 = [i2++];
+	r6.h = (a1 += r4.h * r5.h), r6.l = (a0 += r4.l * r5.l) (t) || [p0++] = r7;
+	a1 = r0.h * r0.h, a0 = r0.l * r0.l || [p2++] = r6;
 	a1 += r2.h * r2.h, a0 += r2.l * r2.l || r2 = [i1++];
-	r7.h = (a1 += r4.h * r4.h), r7.l = (a0 += r4.l * r4.l) (t) || r4 = [i2++];
-	a1 = r1.h * r1.h, a0 = r1.l * r1.l || r1 = [i0++] || [p0++] = r7;
-	a1 += r3.h * r3.h, a0 += r3.l * r3.l || r3 = [i1++];
-.Lv_e:	r6.h = (a1 += r5.h * r5.h), r6.l = (a0 += r5.l * r5.l) (t) || r5 = [i2++];
+	r7.h = (a1 += r4.h * r4.h), r7.l = (a0 += r4.l * r4.l) (t) || r0 = [i0++];
+	a1 = r1.h * r1.h, a0 = r1.l * r1.l || r4 = [i2++];
+	a1 += r3.h * r3.h, a0 += r3.l * r3.l || r1 = [i0++];
+.Lv_e:	r6.h = (a1 += r5.h * r5.h), r6.l = (a0 += r5.l * r5.l) (t) || r3 = [i1++];
 	[p1++] = r6;
+	[p0++] = r7;
 
 	/* 3. window sums, one plane at a time: W = (c(x)|c(x-1)) + (c(x+1)|c(x)) + (c(x+2)|c(x+1)) */
 	r0 = [fp + F_CSUM];
 	p4 = r0;
-	r1 = [fp + F_PLANE];
-	r2 = r1 + r1;
-	r2 = r2 + r1;
-	p5 = r2;                /* C plane -> its W plane */
+	p5 = [fp + F_WOFF];     /* C plane -> its W plane */
 	p3 = [fp + F_HALF];
-	r7 = 3;
+	r7 = 2;                 /* cxx and cyy: cxy's window sum is made in the response */
 .Lwin:
+	/* per pair n (x = 2n + 2): E = (c(x+1)|c(x)), O(n) = (c(x+2)|c(x+1)) from two halfword
+	 * loads, W = E + O(n-1) + O(n); two ALU issues a pair. The halfword c(x+1) shares its word
+	 * with E (one bank access); c(x+2) goes with the store. */
 	i0 = p4;
 	p0 = p4 + p5;
 	i1 = p0;                /* the first (garbage) store goes to W[0..1], the pair for x = 2 to W[2..3] */
-	r2 = [i0++];
-	r0 = [i0++];
-	r1 = pack (r0.l, r2.h);
+	r0 = p4;
+	r0 += 2;
+	i2 = r0;
+	r1.l = w[i2++];         /* O(-1) = (c(2)|c(1)) */
+	r1.h = w[i2++];
+	i0 += 4;                /* E of x = 2 */
 	lsetup (.Lw_s, .Lw_e) lc0 = p3;
-.Lw_s:	r4 = r1 +|+ r0 || r2 = [i0++];
-	r3 = pack (r2.l, r0.h) || [i1++] = r5;  /* not beside the load: C and W share sub-banks */
-	r4 = r4 +|+ r3 || r0 = [i0++];
-	r1 = pack (r0.l, r2.h) || [i1++] = r4;
-	r5 = r3 +|+ r2;
-.Lw_e:	r5 = r5 +|+ r1;
-	[i1++] = r5;
+.Lw_s:	r3 = r3 +|+ r1 || r0 = [i0++] || r5.l = w[i2++];
+	r4 = r0 +|+ r1 || r5.h = w[i2++] || [i1++] = r3;
+	r4 = r4 +|+ r5 || r0 = [i0++] || r1.l = w[i2++];
+.Lw_e:	r3 = r0 +|+ r5 || r1.h = w[i2++] || [i1++] = r4;
+	r3 = r3 +|+ r1;
+	[i1++] = r3;
 	r0 = [fp + F_PLANE];
 	r1 = p4;
 	r1 = r1 + r0;
@@ -303,27 +327,38 @@ _bvb_harris_response_asm:
 	/* 4. response, pairs x = 2, 4, ...; the first two stores (garbage) land on dst[0], dst[1] */
 	r0 = [fp + F_CSUM];
 	r1 = [fp + F_PLANE];
-	r2 = r1 + r1;
-	r2 = r2 + r1;
+	r2 = [fp + F_WOFF];
 	r0 = r0 + r2;
 	r0 += 4;
 	i0 = r0;                /* Wa + 2 elements */
 	r0 = r0 + r1;
-	i1 = r0;
-	r0 = r0 + r1;
-	i2 = r0;
+	i1 = r0;                /* Wb + 2 elements */
+	r0 = [fp + F_CSUM];
+	r1 = r1 << 1;
+	r0 = r0 + r1;           /* cxy */
+	r1 = r0;
+	r1 += 4;
+	i2 = r1;                /* E = (c(3)|c(2)) */
+	r0 += 2;
+	i3 = r0;
 	p0 = [fp + F_DST];
 	p3 = [fp + F_NPAIR];
 	r3 = BVB_HARRIS_K4_Q15 (x);
 	r0 = [i0++];
 	r1 = [i1++];
 	r2 = [i2++];
+	r5.l = w[i3++];         /* O = (c(2)|c(1)) */
+	r5.h = w[i3++];
+	/* c = E + O(x-1) + O(x+1) as in the window sums, O in one register: its halves are loaded
+	 * after the first add and before the second. One data access an issue. */
 	lsetup (.Lr_s, .Lr_e) lc0 = p3;
-.Lr_s:	r4 = r0 +|+ r1, r5 = r0 -|- r1 (asr) || [p0++] = r6;
-	r6.h = r4.h * r3.l, r6.l = r4.l * r3.l (t) || [p0++] = r7;
-	a1 = r0.h * r1.h, a0 = r0.l * r1.l (is) || r0 = [i0++];
-	a1 -= r2.h * r2.h, a0 -= r2.l * r2.l (is) || r1 = [i1++];
-.Lr_e:	r7 = (a1 -= r6.h * r4.h), r6 = (a0 -= r6.l * r4.l) (is) || r2 = [i2++];
+.Lr_s:	r2 = r2 +|+ r5 || [p0++] = r6;
+	a1 = r0.h * r1.h, a0 = r0.l * r1.l (is) || [p0++] = r7;
+	r4 = r0 +|+ r1, r0 = r0 -|- r1 (asr) || r5.l = w[i3++];
+	r6.h = r4.h * r3.l, r6.l = r4.l * r3.l (t) || r5.h = w[i3++];
+	r2 = r2 +|+ r5 || r0 = [i0++];
+	a1 -= r2.h * r2.h, a0 -= r2.l * r2.l (is) || r2 = [i2++];
+.Lr_e:	r7 = (a1 -= r6.h * r4.h), r6 = (a0 -= r6.l * r4.l) (is) || r1 = [i1++];
 	[p0++] = r6;
 	[p0++] = r7;
 	/* the border columns */
@@ -712,7 +747,7 @@ _bvb_harris_response_asm:
 	r0 = 0;
 	[fp + F_JOB] = r0;
 	[fp + F_DOUT] = r0;
-	r0 = [fp + F_SLOT0];
+	r0 = [fp + F_CSUM];
 	r0 += -8;               /* scratch */
 	r2.l = 0;
 	r2.h = 0xff80;
@@ -761,7 +796,7 @@ _bvb_harris_response_asm:
 	r1 += 16;
 	r2 = 24;
 	r1 *= r2;
-	r2 = [fp + F_SLOT0];
+	r2 = [fp + F_CSUM];
 	r2 += -8;
 	r1 = r1 + r2;
 	[fp + F_JOB] = r1;
@@ -850,6 +885,10 @@ _bvb_harris_response_asm:
 	[i2++m2] = r7;
 	/* gx = mid[x+1] - mid[x-1] */
 	r5 = p0;
+	r0 = 3;
+	r0 = r0 & r5;
+	cc = r0 == 0;
+	if cc jump .Lgx_a;
 	r0 = r5;
 	r0 += 1;
 	i0 = r0;
@@ -875,6 +914,7 @@ _bvb_harris_response_asm:
 	/* x from 8 n8 to width - 2: pairs, then perhaps one pixel. R5 mid, R4 dn, R3 up. */
 	r6 = [fp + F_N8];
 	r6 <<= 3;               /* x */
+.Lg_tail_x:
 	r0 = [fp + F_W];
 	r0 += -1;
 	r0 = r0 - r6;           /* pixels left: width - 1 - x */
@@ -927,6 +967,36 @@ _bvb_harris_response_asm:
 	w[i3] = r6.l;
 .Lg_done:
 	rts;
+	/* mid word-aligned (the ring's rows): one load stream, both windows from one register pair,
+	 * so no two loads share an issue (the two streams' words collided in a sub-bank). Groups
+	 * x = 4j - 2 .. 4j + 1: the x+1 window at byte 3 of the word at mid + 4j - 4, the x-1
+	 * window at byte 1; pair x = -2 goes to the pad before the slot. */
+.Lgx_a:
+	r0 = r5;
+	r0 += -1;
+	i0 = r0;
+	r0 += -2;
+	i1 = r0;
+	r0 = p1;
+	r0 += -16;
+	i2 = r0;
+	disalgnexcpt || r0 = [i0++];
+	disalgnexcpt || r1 = [i0++];
+	lsetup (.Lgxa_s, .Lgxa_e) lc0 = p3;
+.Lgxa_s: (r5, r4) = byteop16m (r1:0, r1:0) || r0 = [i0++];
+	r4 = r4 << 5 (v) || [i2++m2] = r7;
+	r5 = r5 << 5 (v) || [i2++m2] = r4;
+	(r7, r6) = byteop16m (r1:0, r1:0) (r) || r1 = [i0++];
+	r6 = r6 << 5 (v) || [i2++m2] = r5;
+.Lgxa_e: r7 = r7 << 5 (v) || [i2++m2] = r6;
+	[i2++m2] = r7;
+	r5 = p0;
+	r4 = [fp + F_DNP];
+	r3 = [fp + F_UPP];
+	r6 = [fp + F_N8];
+	r6 <<= 3;
+	r6 += -2;               /* the tail from x = 8 n8 - 2 (its gy pair again, the same values) */
+	jump .Lg_tail_x;
 	.size _bvb_harris_response_asm, . - _bvb_harris_response_asm
 
 /* Harris candidates (bvb_harris_nms in bvb/harris.h), bit-exact with firmware/c/harris.c.
@@ -965,6 +1035,28 @@ _bvb_harris_response_asm:
 #define C_ARG_CAND    56
 #define C_ARG_COUNT   60
 #define C_ARG_SCRATCH 64
+
+/* A 2x2 block above the threshold (I0, I1 at the next block's upper and lower pair, M2 = -16,
+ * M3 the stride): its upper pair's larger value in R0 (R4 its offset, 0 or 4) and the lower
+ * pair's in R2 (R5 its offset, stride or stride + 4), raster-first among equals; the two
+ * scans' slow paths (bvb_harris_nms_asm's and the ring's) share it. */
+.macro NMS_BLOCK_WINNERS
+	i0 += m2;
+	i1 += m2;
+	mnop || r0 = [i0++] || r2 = [i1++];     /* a, c */
+	mnop || r1 = [i0++] || r3 = [i1++];     /* b, d */
+	r4 = 0;
+	r5 = 4;
+	cc = r0 < r1;
+	if cc r0 = r1;
+	if cc r4 = r5;
+	r5 = m3;
+	r1 = r5;
+	r1 += 4;
+	cc = r2 < r3;
+	if cc r2 = r3;
+	if cc r5 = r1;
+.endm
 
 	.global _bvb_harris_nms_asm
 	.type _bvb_harris_nms_asm, STT_FUNC
@@ -1139,21 +1231,7 @@ _bvb_harris_nms_asm:
 /* A 2x2 block above the threshold: its upper pair is 16 bytes behind I0, its lower pair 16
  * behind I1. Leaves R0-R3 holding the next block and I0, I1 after it, as the loop expects. */
 .Lc_slow:
-	i0 += m2;
-	i1 += m2;
-	mnop || r0 = [i0++] || r2 = [i1++];     /* a, c */
-	mnop || r1 = [i0++] || r3 = [i1++];     /* b, d */
-	r4 = 0;
-	r5 = 4;
-	cc = r0 < r1;                            /* the winner, raster-first among equals */
-	if cc r0 = r1;
-	if cc r4 = r5;
-	r5 = m3;
-	r1 = r5;
-	r1 += 4;
-	cc = r2 < r3;
-	if cc r2 = r3;
-	if cc r5 = r1;
+	NMS_BLOCK_WINNERS
 	cc = r0 < r2;
 	if cc r0 = r2;
 	if cc r4 = r5;                           /* R0 its value, R4 its offset from the block */
@@ -1844,21 +1922,7 @@ _bvb_harris_nms_stream_asm:
 	/* above the threshold: bvb_harris_nms_asm's .Lc_slow with the ring's distances; the row
 	 * above an upper winner is G before it and the row below Dp after it; above a lower
 	 * winner Dp before, below G after */
-	i0 += m2;
-	i1 += m2;
-	mnop || r0 = [i0++] || r2 = [i1++];     /* a, c */
-	mnop || r1 = [i0++] || r3 = [i1++];     /* b, d */
-	r4 = 0;
-	r5 = 4;
-	cc = r0 < r1;
-	if cc r0 = r1;
-	if cc r4 = r5;
-	r5 = m3;
-	r1 = r5;
-	r1 += 4;
-	cc = r2 < r3;
-	if cc r2 = r3;
-	if cc r5 = r1;
+	NMS_BLOCK_WINNERS
 	r1 = m0;
 	r3 = m3;
 	cc = r0 < r2;
