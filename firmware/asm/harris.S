@@ -75,6 +75,7 @@
  *   collisions (of 18,564); at 640x480 the per-row costs weigh a quarter.
  * Working set: 24 * NG + 144 bytes of working rows, then the DMA region (job, four image rows,
  * two response rows): BVB_HARRIS_SCRATCH_BYTES, 6.4 KB at 160, 23.7 KB at 640. */
+#include "bvb/asm.h"
 #include "bvb/dma.h"
 #include "bvb/harris.h"
 
@@ -116,9 +117,7 @@
 #define F_WOFF   -164  /* bytes from a C plane to its W plane */
 #define F_SIZE   164
 
-	.global _bvb_harris_response_asm
-	.type _bvb_harris_response_asm, STT_FUNC
-_bvb_harris_response_asm:
+BVB_FUNC bvb_harris_response_asm
 	[--sp] = (r7:4, p5:3);
 	p0 = [sp + 40];         /* height (arguments are 28 bytes further up after the push) */
 	r3 = [sp + 44];         /* src_stride */
@@ -997,7 +996,7 @@ _bvb_harris_response_asm:
 	r6 <<= 3;
 	r6 += -2;               /* the tail from x = 8 n8 - 2 (its gy pair again, the same values) */
 	jump .Lg_tail_x;
-	.size _bvb_harris_response_asm, . - _bvb_harris_response_asm
+BVB_ENDFUNC bvb_harris_response_asm
 
 /* Harris candidates (bvb_harris_nms in bvb/harris.h), bit-exact with firmware/c/harris.c.
  *
@@ -1058,9 +1057,7 @@ _bvb_harris_response_asm:
 	if cc r5 = r1;
 .endm
 
-	.global _bvb_harris_nms_asm
-	.type _bvb_harris_nms_asm, STT_FUNC
-_bvb_harris_nms_asm:
+BVB_FUNC bvb_harris_nms_asm
 	[--sp] = (r7:4, p5:3);
 	link C_SIZE;
 	[fp + C_W] = r1;
@@ -1322,7 +1319,7 @@ _bvb_harris_nms_asm:
 	[p5++] = r3;
 .Lc_p_e: p4 += 1;
 	rts;
-	.size _bvb_harris_nms_asm, . - _bvb_harris_nms_asm
+BVB_ENDFUNC bvb_harris_nms_asm
 
 /* bvb_harris_nms_stream_asm: bvb_harris_nms with the response map in SDRAM (the stand-alone
  * scan: kernels.def's harris_nms), its rows brought into L1 by memory DMA (bvb/dma.h) ahead of
@@ -1405,11 +1402,7 @@ _bvb_harris_nms_asm:
 #define S_DS_XC  6
 #define S_DST_SLOTS (BVB_DMA_MAX_XFERS * 14)
 
-	.text
-	.align 4
-	.global _bvb_harris_nms_stream_asm
-	.type _bvb_harris_nms_stream_asm, STT_FUNC
-_bvb_harris_nms_stream_asm:
+BVB_FUNC bvb_harris_nms_stream_asm, .text
 	[--sp] = (r7:4, p5:3);
 	link S_SIZE;
 	[fp + C_W] = r1;
@@ -2055,4 +2048,4 @@ _bvb_harris_nms_stream_asm:
 	[p5++] = r3;
 .Ls_p_e: p4 += 1;
 	rts;
-	.size _bvb_harris_nms_stream_asm, . - _bvb_harris_nms_stream_asm
+BVB_ENDFUNC bvb_harris_nms_stream_asm
