@@ -64,8 +64,8 @@
  * template at many offsets, and each of those costs an exact comparison (~200 cycles): on the
  * Middlebury pairs (RubberWhale, Grove2, Urban2, Dimetrodon, Hydrangea; 48 points, r = 5, s = 8)
  * 256 to 391 cycles per candidate, 4 to 6 times faster than the C reference there.
- * ncc_scoremap (one point, every candidate scored exactly): 167,005 modelled cycles at 160x120
- * (578 per score), 179,698 at 320x240 (622); 140,537 issued, 23,906 multi-cycle (calls, returns
+ * ncc_scoremap (one point, every candidate scored exactly): 166,992 modelled cycles at 160x120
+ * (578 per score), 179,685 at 320x240 (622; 13 fewer than before the pass 1 change); 140,537 issued, 23,906 multi-cycle (calls, returns
  * and taken branches: five calls a score), ~400 address-register stalls (one a candidate in
  * _ncc_exactv), no collisions, the rest SDRAM line fills (2,183 at 160x120, 14,876 at
  * 320x240, where the frames are larger than the data cache). Where they go at 320x240
