@@ -3,8 +3,13 @@
  * Cycles (bfbench bench: 32 points on a grid, r = 5 (11x11), s = 8 (289 candidates each), frame 2
  * = frame 1 (uniform noise) moved by (3, -2) plus noise; frames in SDRAM, scratch in L1 bank A).
  * Modelled BF537 cycles (--timing bf537) per call:
- *   160x120: 737,195 = 79.7 per candidate; 320x240: 737,002 = 79.7; 640x480: 737,510 (bound
- *   60.5; the issue's target is 80, 739,840). Before the template of the memory DMA copy was
+ *   160x120: 736,779 = 79.7 per candidate; 320x240: 736,586 = 79.7; 640x480: 737,094 (bound
+ *   60.5, 1.32x; the issue's target is 80, 739,840); 737,195, 737,002, 737,510 before pass 1
+ *   cleared its S register in a parallel slot of a tail store (13 cycles a point). Where the
+ *   320x240 call goes per point (bfbench profile, by routine): MAC pass 17,798 (bound 17,484),
+ *   pass 1 1,642, pass 2 795, selection 753 (with its calls and the seed's exact v), template
+ *   285, copy program set-up 253, isqrt 252, DMA helpers and bookkeeping ~510, exact v 163,
+ *   division 101, score 76, the rest ~400. Before the template of the memory DMA copy was
  *   done by SAA and an unrolled pass (_ncc_template, ncc_template5.inc: ~350 cycles a point
  *   fewer): 748,491, 748,298, 748,806; before the grouped selection sweep (below) and the
  *   radius-5-first MAC dispatch: 752,531, 752,728, 753,238; before memory DMA: 789,535 =
@@ -39,7 +44,8 @@
  *   bytes, already in L1, into the spare He, Ho), into the set the next point does not use,
  *   and waited for before the next MAC pass: ~3,500 cycles of DMA under ~18,000 of MACs. The
  *   first point's job is waited for at once, the second's runs during the first's passes.
- * Simulator cycles per call (--timing none): 729,060 at 160x120 (739,940 before the template
+ * Simulator cycles per call (--timing none): 728,644 at 160x120, 728,449 at 320x240, 728,957 at
+ *   640x480 (729,060 at 160x120 before the pass 1 change above, 739,940 before the template
  *   change, 738,970 before the sweep change; where the sweep's extra issues go has not been
  *   profiled) (the simulator's untimed DMA
  *   is waited for by polling; before memory DMA 725,345 = 78.4 per candidate); C at -O2:
@@ -58,8 +64,8 @@
  * template at many offsets, and each of those costs an exact comparison (~200 cycles): on the
  * Middlebury pairs (RubberWhale, Grove2, Urban2, Dimetrodon, Hydrangea; 48 points, r = 5, s = 8)
  * 256 to 391 cycles per candidate, 4 to 6 times faster than the C reference there.
- * ncc_scoremap (one point, every candidate scored exactly): 167,005 modelled cycles at 160x120
- * (578 per score), 179,698 at 320x240 (622); 140,537 issued, 23,906 multi-cycle (calls, returns
+ * ncc_scoremap (one point, every candidate scored exactly): 166,992 modelled cycles at 160x120
+ * (578 per score), 179,685 at 320x240 (622; 13 fewer than before the pass 1 change); 140,537 issued, 23,906 multi-cycle (calls, returns
  * and taken branches: five calls a score), ~400 address-register stalls (one a candidate in
  * _ncc_exactv), no collisions, the rest SDRAM line fills (2,183 at 160x120, 14,876 at
  * 320x240, where the frames are larger than the data cache). Where they go at 320x240
@@ -1310,10 +1316,10 @@ _ncc_pass1:
 	r0 += 1;
 	r0 >>= 1;
 	lc1 = r0;            /* (L+1)/2 column pairs */
+	r6 = 0;
 	lsetup (.Lp1_c0, .Lp1_c1) lc1;
 .Lp1_c0:
 	i1 = i0;
-	r6 = 0;
 	a1 = a0 = 0 || r1 = [i1 ++ m0] || nop;
 	lsetup (.Lp1_i0, .Lp1_i1) lc0 = p0;
 .Lp1_i0:
@@ -1342,7 +1348,7 @@ _ncc_pass1:
 	[p2++] = r2;
 	w[p1++] = r6;
 	w[i2++] = r6.h;
-	[i3++] = r3;
+	r6 = r6 -|- r6 || [i3++] = r3 || nop;  /* the next column pair's S = 0 */
 	p1 = p1 + p3;
 	p2 = p2 + p3;
 	p2 = p2 + p3;
