@@ -210,15 +210,13 @@
 #define MAX_RADIUS 5
 #define MAX_SEARCH 16
 
+#include "bvb/asm.h"
 #include "bvb/dma.h"
 
 	.section .l1.text, "ax"
 
 /* ------------------------------------------------------------------------------------------- */
-	.align 4
-	.global _bvb_ncc_match_asm
-	.type _bvb_ncc_match_asm, STT_FUNC
-_bvb_ncc_match_asm:
+BVB_FUNC bvb_ncc_match_asm
 	[--sp] = rets;
 	[--sp] = (r7:4, p5:3);
 	/* 32 bytes pushed: width at [sp+44], height +48, points +52, npoints +56, radius +60,
@@ -426,7 +424,7 @@ _bvb_ncc_match_asm:
 	(r7:4, p5:3) = [sp++];
 	rets = [sp++];
 	rts;
-	.size _bvb_ncc_match_asm, . - _bvb_ncc_match_asm
+BVB_ENDFUNC bvb_ncc_match_asm
 
 /* ------------------------------------------------------------------------------------------- */
 /* Derived sizes and the scratch layout (bvb/ncc.h BVB_NCC_SCRATCH_SIZE). P5 = context. */
@@ -2442,10 +2440,7 @@ _ncc_score:
 	rts;
 
 /* ------------------------------------------------------------------------------------------- */
-	.align 4
-	.global _bvb_ncc_scoremap_asm
-	.type _bvb_ncc_scoremap_asm, STT_FUNC
-_bvb_ncc_scoremap_asm:
+BVB_FUNC bvb_ncc_scoremap_asm
 	[--sp] = rets;
 	[--sp] = (r7:4, p5:3);
 	/* width [sp+44], height +48, x +52, y +56, radius +60, search +64, map +68, scratch +72 */
@@ -2565,5 +2560,5 @@ _bvb_ncc_scoremap_asm:
 	(r7:4, p5:3) = [sp++];
 	rets = [sp++];
 	rts;
-	.size _bvb_ncc_scoremap_asm, . - _bvb_ncc_scoremap_asm
+BVB_ENDFUNC bvb_ncc_scoremap_asm
 
